@@ -1,0 +1,83 @@
+"""Reduced numbers the report shows and summary.json keeps: convergence fits, speed/accuracy points, environment.
+
+Everything here is computed from what the run and result files hold; plotting happens later, from these numbers.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+import references
+from runfile import PROVENANCE, family
+
+
+def fit_order(x, error):
+    """Least-squares slope of log(error) against log(x); None with fewer than two positive points."""
+    x, error = np.asarray(x, dtype=float), np.asarray(error, dtype=float)
+    keep = (x > 0) & (error > 0) & np.isfinite(x) & np.isfinite(error)
+    if keep.sum() < 2:
+        return None
+    return float(np.polyfit(np.log(x[keep]), np.log(error[keep]), 1)[0])
+
+
+def convergence_entries(results: list) -> list:
+    out = []
+    for res in results:
+        for entry in res.data.get("convergence", []):
+            x, err = entry.get("x", []), entry.get("error", [])
+            out.append({"test": res.test, "name": str(entry.get("name", "?")), "x_label": entry.get("x_label", "x"),
+                        "x": list(x), "error": list(err), "fitted_order": fit_order(x, err),
+                        "observed_order": entry.get("observed_order"), "theory_order": entry.get("theory_order"),
+                        "source": entry.get("source", "")})
+    return out
+
+
+def _reference_pair(runs):
+    """The first (probe name, reference key) for which every run has a computable reference error."""
+    first = runs[0]
+    for probe in first.probes:
+        for key in references.keys_for(probe):
+            errors = []
+            for run in runs:
+                match = next((p for p in run.probes if p.name == probe.name), None)
+                errors.append(None if match is None else references.reference_error(run, match, key))
+            if all(e is not None for e in errors):
+                return probe.name, key, errors
+    return None
+
+
+def speed_accuracy(runs: list, known_cases) -> dict:
+    """{case: {"error": what the error is, "points": [...]}} for cases with two or more readable runs."""
+    groups = {}
+    for run in runs:
+        if not run.read_error and isinstance(run.metrics.get("wall_time_s"), (int, float)):
+            groups.setdefault(family(run.scene_name, known_cases), []).append(run)
+    out = {}
+    for case, members in sorted(groups.items()):
+        if len(members) < 2:
+            continue
+        pair = _reference_pair(members)
+        if pair:
+            probe_name, key, errors = pair
+            what = f"RMS of probe {probe_name} - {references.REFERENCES[key].citation} (scaled)"
+        else:
+            errors = [r.metrics.get("max_volume_variation") for r in members]
+            what = "max_volume_variation (no reference error available)"
+        points = [{"run": r.label, "method": r.method, "wall_time_s": float(r.metrics["wall_time_s"]),
+                   "error": None if e is None else float(e), "particles": r.metrics.get("particles")}
+                  for r, e in zip(members, errors)]
+        out[case] = {"error": what, "points": sorted(points, key=lambda p: (p["method"], p["wall_time_s"]))}
+    return out
+
+
+def environment(runs: list) -> dict:
+    """Provenance attributes as the run files give them: one value when all runs agree, else each run's value."""
+    readable = [r for r in runs if not r.read_error]
+    rows = []
+    for name in PROVENANCE:
+        values = {r.label: r.attrs.get(name, "(not in run file)") for r in readable}
+        distinct = sorted({str(v) for v in values.values()})
+        rows.append({"attribute": name, "value": distinct[0] if len(distinct) == 1 else None,
+                     "per_run": None if len(distinct) <= 1 else {k: str(v) for k, v in values.items()}})
+    walls = [r.metrics["wall_time_s"] for r in readable if isinstance(r.metrics.get("wall_time_s"), (int, float))]
+    return {"rows": rows if readable else [], "runs": len(readable),
+            "total_wall_time_s": float(sum(walls)) if walls else None}

@@ -1,0 +1,222 @@
+"""Tests of the report code on small generated run files (tests/conftest.py)."""
+import json
+import re
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import numpy.testing as npt
+import pytest
+
+import analysis
+import criteria
+import references
+import vv_report
+from runfile import family, read_run
+
+A = 0.05  # column width of the synthetic dam break [m]
+
+
+def front(t):
+    return A * (1.0 + 0.4 * (t * np.sqrt(2 * 9.81 / A)) ** 1.5)
+
+
+def report(tmp_path, runs, results=None, *extra):
+    out = tmp_path / "out"
+    rc = vv_report.main(["--runs", str(runs), "--results", str(results or tmp_path / "no_results"),
+                         "--out", str(out), "--quick", *extra])
+    summary = json.loads((out / "summary.json").read_text())
+    return rc, out, summary
+
+
+def images_exist(out):
+    html = (out / "index.html").read_text()
+    names = re.findall(r'<img src="([^"]+)"', html)
+    for name in names:
+        assert (out / name).is_file(), name
+    return html, names
+
+
+def by_run(summary, run):
+    return {c["metric"]: c for c in summary["criteria"] if c["run"] == run}
+
+
+def test_stable_passing_run(tmp_path, make_run):
+    make_run(tmp_path / "runs" / "dam_break.h5", "dam_break", max_volume_variation=0.001,
+             probes=[("surge_front", front, {"type": "front", "units": "m", "scale_length": A})])
+    rc, out, summary = report(tmp_path, tmp_path / "runs")
+    assert rc == 0
+    html, names = images_exist(out)
+    assert "dam_break-snapshots.png" in names and "dam_break-volume.png" in names
+    assert "dam_break-probe-surge_front.png" in names
+    assert "PASS" in html and not summary["problems"]
+    assert summary["counts"] == {"total": 5, "passed": 2, "failed": 0, "not_run": 3}
+    mine = by_run(summary, "dam_break")
+    assert mine["status"]["outcome"] == "pass"
+    npt.assert_allclose(mine["max_volume_variation"]["measured"], 0.001, rtol=0, atol=1e-15)
+    npt.assert_allclose(mine["max_volume_variation"]["run_time_s"], 12.5, rtol=1e-12, atol=0)
+    env = {r["attribute"]: r["value"] for r in summary["environment"]["rows"]}
+    assert env["git_commit"] == "abc1234" and env["threads"] == "4"
+
+
+def test_unstable_run_fails_and_exits_nonzero(tmp_path, make_run):
+    make_run(tmp_path / "runs" / "drop_into_pool.h5", "drop_into_pool", status="unstable")
+    rc, out, summary = report(tmp_path, tmp_path / "runs")
+    assert rc != 0
+    images_exist(out)
+    status = by_run(summary, "drop_into_pool")["status"]
+    assert status["outcome"] == "fail" and "nan" in status["message"]
+    assert summary["counts"]["failed"] == 1
+    assert summary["criteria"][0]["outcome"] == "fail"  # failures first
+    assert "FAIL" in (out / "index.html").read_text()
+
+
+def test_criterion_failure_exits_nonzero(tmp_path, make_run):
+    make_run(tmp_path / "runs" / "sub" / "dam_break_dx0.01.h5", "dam_break_dx0.01", max_volume_variation=0.01)
+    rc, out, summary = report(tmp_path, tmp_path / "runs")
+    assert rc == 1
+    vv = by_run(summary, "sub/dam_break_dx0.01")["max_volume_variation"]
+    assert vv["case"] == "dam_break" and vv["outcome"] == "fail"
+    assert summary["counts"] == {"total": 5, "passed": 1, "failed": 1, "not_run": 3}
+
+
+def test_empty_directory_is_not_run(tmp_path):
+    (tmp_path / "runs").mkdir()
+    rc, out, summary = report(tmp_path, tmp_path / "runs")
+    assert rc == 0
+    html, names = images_exist(out)
+    assert names == []
+    n = sum(len(v) for v in criteria.load_criteria().values())
+    assert summary["counts"] == {"total": n, "passed": 0, "failed": 0, "not_run": n}
+    assert "NOT RUN" in html and "not run: no --stability" in html and "not run: no --perf" in html
+
+
+def test_missing_directories_do_not_crash(tmp_path):
+    rc, out, summary = report(tmp_path, tmp_path / "does_not_exist")
+    assert rc == 0 and summary["inputs"]["run_files"] == 0
+
+
+def test_junit_has_one_testcase_per_criterion(tmp_path, make_run, make_result):
+    make_run(tmp_path / "runs" / "two_fluids.h5", "two_fluids", phases=("light", "heavy"), max_volume_variation=0.003)
+    make_result(tmp_path / "results" / "Poiseuille.SteadyProfile.json")
+    rc, out, summary = report(tmp_path, tmp_path / "runs", tmp_path / "results")
+    assert rc == 1  # heavy phase: 0.003 > 0.002
+    cases = list(ET.parse(out / "junit.xml").getroot().iter("testcase"))
+    assert len(cases) == summary["counts"]["total"] == len(summary["criteria"])
+    names = " ".join(c.get("name") for c in cases)
+    assert "max_volume_variation_heavy < 0.002 | Lobovsky & Kren" in names
+    assert "L2 error / v_max at dx = L/20 <= 0.03" in names
+    failed = [c for c in cases if c.find("failure") is not None]
+    assert len(failed) == summary["counts"]["failed"] == 1  # heavy 0.003 fails, light 0.0015 passes
+    assert not summary["problems"]
+
+
+def test_verification_recheck_disagreeing_with_the_test_fails(tmp_path, make_result):
+    make_result(tmp_path / "results" / "A.B.json", test="A.B", measured=0.05, threshold=0.03, passed=True)
+    (tmp_path / "results" / "broken.json").write_text("{not json")
+    rc, out, summary = report(tmp_path, tmp_path / "runs", tmp_path / "results")
+    assert rc == 1
+    ver = [c for c in summary["criteria"] if c["kind"] == "verification"]
+    assert {c["outcome"] for c in ver} == {"fail"} and len(ver) == 2
+    assert any("re-check disagrees" in c["message"] for c in ver)
+
+
+def test_convergence_fit_and_plot(tmp_path, make_result):
+    make_result(tmp_path / "results" / "Poiseuille.SteadyProfile.json")
+    rc, out, summary = report(tmp_path, tmp_path / "runs", tmp_path / "results")
+    assert rc == 0
+    (entry,) = summary["convergence"]
+    npt.assert_allclose(entry["fitted_order"], 2.0, rtol=1e-9, atol=0)
+    html, names = images_exist(out)
+    assert entry["figure"] in names and "fitted slope <b>2.00</b>" in html
+
+
+def test_speed_accuracy_uses_reference_error(tmp_path, make_run):
+    attrs = {"type": "front", "units": "m", "scale_length": A}
+    for dx, wall, kernel in ((0.01, 5.0, "cubic_spline"), (0.005, 40.0, "cubic_spline"), (0.01, 6.0, "wendland_c2")):
+        name = f"dam_break_dx{dx}"
+        make_run(tmp_path / "runs" / kernel / f"{name}.h5", name, wall_time_s=wall, kernel=kernel,
+                 probes=[("surge_front", front, attrs)])
+    rc, out, summary = report(tmp_path, tmp_path / "runs")
+    sa = summary["speed_accuracy"]["dam_break"]
+    assert "Martin & Moyce 1952" in sa["error"]
+    assert len(sa["points"]) == 3 and all(p["error"] is not None for p in sa["points"])
+    _, names = images_exist(out)
+    assert sa["figure"] in names
+
+
+def test_stability_and_perf_sections(tmp_path):
+    (tmp_path / "stab").mkdir()
+    (tmp_path / "perf").mkdir()
+    (tmp_path / "stab" / "lattice.json").write_text(json.dumps(
+        {"sweep": "Cartesian lattice, Wendland", "x_label": "h/dx", "y_label": "perturbation / dx",
+         "points": [{"x": 0.8, "y": 0.01, "outcome": "stable"}, {"x": 3.2, "y": 0.01, "outcome": "unstable",
+                                                                  "cause": "density_band"}]}))
+    (tmp_path / "perf" / "scaling.json").write_text(json.dumps(
+        {"benchmark": "force loop", "x_label": "threads", "y_label": "particle evaluations / s",
+         "series": [{"label": "cubic_spline", "x": [1, 2, 4], "y": [1e6, 1.9e6, 3.5e6]}]}))
+    (tmp_path / "perf" / "gbench.json").write_text(json.dumps(
+        {"context": {"host_name": "h"}, "benchmarks": [{"name": "BM_Neighbours/1000", "real_time": 12.0,
+                                                        "cpu_time": 11.0, "time_unit": "us", "iterations": 100}]}))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--stability", str(tmp_path / "stab"),
+                              "--perf", str(tmp_path / "perf"))
+    html, names = images_exist(out)
+    assert any(n.startswith("stability-") for n in names) and any(n.startswith("perf-") for n in names)
+    assert "BM_Neighbours/1000" in html and "density_band" in html
+    assert summary["stability"][0]["counts"] == {"stable": 1, "unstable": 1, "inaccurate": 0}
+
+
+def test_references_load_with_their_scaling():
+    for key in references.REFERENCES:
+        data = references.load(key)
+        ref = references.REFERENCES[key]
+        assert data[ref.time_column].size > 5
+        for col in ref.value_columns:
+            assert np.all(np.isfinite(data[col]))
+    mm = references.load("martin_moyce_1952_front")
+    npt.assert_allclose([mm["T"][0], mm["Z"][0]], [0.41, 1.11], rtol=0, atol=1e-12)
+
+
+def test_scaled_probe_and_missing_attributes(tmp_path, make_run):
+    path = make_run(tmp_path / "r.h5", "dam_break", probes=[
+        ("surge_front", front, {"type": "front", "units": "m", "scale_length": A}),
+        ("p_sensor2", lambda t: 0 * t, {"type": "pressure", "units": "Pa"})])
+    run = read_run(path, tmp_path)
+    front_probe, pressure = sorted(run.probes, key=lambda p: p.name != "surge_front")
+    ts, zs, note = references.scale_probe(run, front_probe, "martin_moyce_1952_front")
+    npt.assert_allclose(zs[0], 1.0, rtol=1e-12, atol=0)
+    npt.assert_allclose(ts[-1], 0.4 * np.sqrt(2 * 9.81 / A), rtol=1e-12, atol=0)
+    assert "9.81 assumed" in note
+    assert references.scale_probe(run, pressure, "lobovsky_2014_sensor2")[0] is None
+
+
+@pytest.mark.parametrize("measured, comparison, threshold, expected", [
+    (0.001, "<", 0.003, True), (0.003, "<", 0.003, False), (0.002, "<=", 0.002, True),
+    (float("nan"), "<", 1.0, False), (None, ">", 0.0, False), ("stable", "==", "stable", True)])
+def test_compare(measured, comparison, threshold, expected):
+    assert criteria.compare(measured, comparison, threshold) is expected
+
+
+def test_family():
+    known = {"dam_break": [], "drop_into_pool": []}
+    assert family("dam_break_dx0.005", known) == "dam_break"
+    assert family("dam_break", known) == "dam_break"
+    assert family("poiseuille_dx1e-05", known) == "poiseuille"
+
+
+def test_fit_order_needs_two_points():
+    assert analysis.fit_order([1.0], [1.0]) is None
+    npt.assert_allclose(analysis.fit_order([1, 2, 4], [1, 0.5, 0.25]), -1.0, rtol=1e-12, atol=0)
+
+
+def test_fixed_length_string_attributes_as_cpp_writes_them(tmp_path, make_run):
+    import h5py
+
+    path = make_run(tmp_path / "runs" / "dam_break.h5", "dam_break")
+    with h5py.File(path, "a") as f:
+        for key in ("status", "scene_name", "kernel"):
+            value = str(f.attrs[key])
+            del f.attrs[key]
+            f.attrs.create(key, np.bytes_(value), dtype=h5py.string_dtype("ascii", len(value)))
+    run = read_run(path, tmp_path / "runs")
+    assert (run.attrs["status"], run.scene_name, run.label) == ("stable", "dam_break", "dam_break")
+    assert isinstance(run.metrics["particles"], int)

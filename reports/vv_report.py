@@ -1,0 +1,192 @@
+#!/usr/bin/python3
+"""V&V report of the SPH solver.
+
+    /usr/bin/python3 reports/vv_report.py --runs RUNS --results RESULTS --out reports/out \
+        [--quick] [--perf DIR] [--stability DIR] [--criteria validation/criteria.toml]
+
+Reads every *.h5 run file under --runs and every *.json verification result under --results (reports/SCHEMA.md),
+decides the criteria (validation/criteria.toml, run status, the verification checks) with pytest
+(reports/test_criteria.py -> junit.xml), and writes index.html, its PNG figures, junit.xml and summary.json to --out.
+Exit status: 0 when no criterion failed, 1 when one did (after writing everything).
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import analysis  # noqa: E402
+import plots  # noqa: E402
+import report_html  # noqa: E402
+from criteria import DEFAULT_CRITERIA, NOT_RUN, collect, counts, load_criteria  # noqa: E402
+from runfile import family, read_json_dir, read_results, read_runs  # noqa: E402
+
+FIGURE_ERRORS = (ValueError, KeyError, TypeError, IndexError, OSError)
+
+
+def run_pytest(runs: Path, results: Path, criteria_file: Path, junit: Path) -> tuple:
+    """Decide the criteria with pytest in a child process; returns (exit code, output)."""
+    env = dict(os.environ, VV_RUNS=str(runs), VV_RESULTS=str(results), VV_CRITERIA=str(criteria_file),
+               PYTHONDONTWRITEBYTECODE="1")
+    cmd = [sys.executable, "-m", "pytest", str(HERE / "test_criteria.py"), "-q", "-rN", "-p", "no:cacheprovider",
+           f"--junitxml={junit}", "-o", "junit_suite_name=vv_criteria", "-o", "addopts=",
+           "--rootdir", str(HERE)]
+    proc = subprocess.run(cmd, env=env, capture_output=True, text=True, check=False)
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+def junit_counts(junit: Path) -> dict:
+    root = ET.parse(junit).getroot()
+    cases = root.iter("testcase")
+    n = failed = skipped = 0
+    for case in cases:
+        n += 1
+        failed += case.find("failure") is not None or case.find("error") is not None
+        skipped += case.find("skipped") is not None
+    return {"total": n, "failed": failed, "not_run": skipped, "passed": n - failed - skipped}
+
+
+def _figure(notes: list, what: str, make, *args, **kwargs):
+    """Make one figure; a figure that cannot be drawn from odd data becomes a note, not a crash."""
+    try:
+        return make(*args, **kwargs)
+    except FIGURE_ERRORS as err:
+        notes.append(f"{what}: figure not drawn ({type(err).__name__}: {err})")
+        return None
+
+
+def case_pages(runs, found, table, out: Path, quick: bool) -> list:
+    pages = []
+    for run in runs:
+        notes, figures = [], []
+        mine = [c for c in found if c.kind == "validation" and c.run == run.label]
+        if not run.read_error:
+            figures.append((_figure(notes, "snapshots", plots.snapshots, run, out, quick), "particle snapshots"))
+            figures.append((_figure(notes, "volume", plots.volume, run, mine, out, quick), "volume variation"))
+            for pr in run.probes:
+                made = _figure(notes, f"probe {pr.name}", plots.probe, run, pr, out, quick)
+                if made:
+                    figures.append((made[0], f"probe {pr.name}"))
+                    notes.extend(made[1])
+        pages.append({"title": f"{family(run.scene_name, table)}: {run.label}", "path": str(run.path),
+                      "attrs": run.attrs, "metrics": run.metrics, "read_error": run.read_error,
+                      "figures": [f for f in figures if f[0]], "notes": notes})
+    for case in sorted({c.case for c in found if c.outcome == NOT_RUN and c.kind == "validation"}):
+        pages.append({"title": case, "not_run": True})
+    return pages
+
+
+def stability_items(directory, out: Path, quick: bool) -> list:
+    items = []
+    for k, (path, obj) in enumerate(read_json_dir(directory)):
+        points = obj.get("points") if isinstance(obj, dict) else None
+        ok = isinstance(points, list) and all(isinstance(p, dict) and {"x", "y", "outcome"} <= set(p) and
+                                              p["outcome"] in plots.OUTCOME_STYLE for p in points)
+        if not ok:
+            why = obj if isinstance(obj, str) else 'expected {"sweep", "x_label", "y_label", "points": [{"x", "y", ' \
+                                                   '"outcome": "stable|unstable|inaccurate", "cause"}]}'
+            items.append({"path": str(path), "error": why})
+            continue
+        notes = []
+        fig = _figure(notes, "stability", plots.stability, obj, out, k, quick)
+        tally = {o: sum(p["outcome"] == o for p in points) for o in plots.OUTCOME_STYLE}
+        items.append({"path": str(path), "sweep": obj.get("sweep", path.stem), "x_label": obj.get("x_label"),
+                      "y_label": obj.get("y_label"), "points": points, "counts": tally, "figure": fig,
+                      "error": "; ".join(notes)})
+    return items
+
+
+def perf_items(directory, out: Path, quick: bool) -> list:
+    items = []
+    for k, (path, obj) in enumerate(read_json_dir(directory)):
+        if isinstance(obj, dict) and isinstance(obj.get("series"), list):
+            notes = []
+            fig = _figure(notes, "performance", plots.perf_series, obj, out, k, quick)
+            items.append({"path": str(path), "title": obj.get("benchmark", path.stem), "figure": fig,
+                          "source": obj.get("source", ""), "data": obj, "error": "; ".join(notes)})
+        elif isinstance(obj, dict) and isinstance(obj.get("benchmarks"), list):  # Google Benchmark --benchmark_out
+            columns = ["name", "real_time", "cpu_time", "time_unit", "iterations", "items_per_second"]
+            items.append({"path": str(path), "title": path.name, "columns": columns,
+                          "rows": [b for b in obj["benchmarks"] if isinstance(b, dict)],
+                          "context": {k: v for k, v in obj.get("context", {}).items()
+                                      if k in ("date", "host_name", "num_cpus", "mhz_per_cpu", "library_build_type")}})
+        else:
+            why = obj if isinstance(obj, str) else \
+                'expected {"benchmark", "x_label", "y_label", "series": [{"label", "x", "y"}]} or Google Benchmark JSON'
+            items.append({"path": str(path), "error": why})
+    return items
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--runs", type=Path, required=True, help="directory searched recursively for *.h5 run files")
+    ap.add_argument("--results", type=Path, required=True, help="directory of verification *.json results")
+    ap.add_argument("--out", type=Path, default=HERE / "out", help="output directory (default reports/out)")
+    ap.add_argument("--quick", action="store_true", help="fewer snapshots, lower resolution figures")
+    ap.add_argument("--perf", type=Path, help="directory of performance *.json results")
+    ap.add_argument("--stability", type=Path, help="directory of stability-sweep *.json results")
+    ap.add_argument("--criteria", type=Path, default=DEFAULT_CRITERIA, help="criteria TOML")
+    args = ap.parse_args(argv)
+    out = args.out
+    out.mkdir(parents=True, exist_ok=True)
+
+    runs, results = read_runs(args.runs), read_results(args.results)
+    table = load_criteria(args.criteria)
+    found = collect(args.runs, args.results, args.criteria, runs=runs, results=results)
+    tally = counts(found)
+
+    problems = []
+    junit = out / "junit.xml"
+    rc, log = run_pytest(args.runs, args.results, args.criteria, junit)
+    if rc not in (0, 1, 5) or not junit.exists():
+        problems.append(f"pytest on test_criteria.py ended with exit code {rc}: {log.strip()[-600:]}")
+    elif found and junit_counts(junit) != tally:
+        problems.append(f"pytest decided {junit_counts(junit)}, the direct evaluation {tally}")
+
+    conv = analysis.convergence_entries(results)
+    for k, entry in enumerate(conv):
+        notes = []
+        entry["figure"] = _figure(notes, "convergence", plots.convergence, entry, out, k, args.quick)
+    speed = analysis.speed_accuracy(runs, table)
+    for case, data in speed.items():
+        data["figure"] = _figure([], "speed/accuracy", plots.speed_accuracy, case, data, out, args.quick)
+
+    report = {
+        "generated": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "inputs": {"runs": str(args.runs), "results": str(args.results), "criteria": str(args.criteria),
+                   "run_files": len(runs), "result_files": len(results),
+                   "perf": str(args.perf) if args.perf else None,
+                   "stability": str(args.stability) if args.stability else None},
+        "counts": tally, "problems": problems, "criteria": found,
+        "environment": analysis.environment(runs),
+        "cases": case_pages(runs, found, table, out, args.quick),
+        "convergence": conv, "speed_accuracy": speed,
+        "stability": stability_items(args.stability, out, args.quick),
+        "performance": perf_items(args.perf, out, args.quick),
+    }
+    (out / "index.html").write_text(report_html.page(report), encoding="utf-8")
+    summary = {k: report[k] for k in ("generated", "inputs", "counts", "problems", "environment", "convergence",
+                                      "speed_accuracy")}
+    summary["criteria"] = [c.as_dict() for c in found]
+    summary["stability"] = [{k: v for k, v in s.items() if k != "points"} for s in report["stability"]]
+    summary["performance"] = [{k: v for k, v in p.items() if k not in ("data", "rows")} for p in report["performance"]]
+    (out / "summary.json").write_text(json.dumps(summary, indent=1, default=str), encoding="utf-8")
+
+    word = "FAIL" if tally["failed"] or problems else ("PASS" if tally["passed"] else "NOT RUN")
+    print(f"{word}: {tally['passed']} passed, {tally['failed']} failed, {tally['not_run']} not run"
+          f" -> {out / 'index.html'}")
+    for p in problems:
+        print(f"problem: {p}", file=sys.stderr)
+    return 1 if tally["failed"] or problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
