@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this project needs, only those missing. Idempotent.
+set -euo pipefail
+packages=(g++ cmake make libgtest-dev libeigen3-dev libhdf5-dev libgsl-dev libtomlplusplus-dev
+  libcli11-dev libbenchmark-dev python3-numpy python3-h5py python3-matplotlib python3-pytest)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "installing: ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,54 @@
+#pragma once
+// One pass of every enabled term over all fluid particles: the rates of change of density,
+// velocity and smoothing length. The scene's choice of kernel and terms picks one of the
+// pre-built pair loops at construction; a term the scene does not enable is not compiled into
+// the loop it runs (no per-pair flag test, no virtual call).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sph/CellList.hpp"
+#include "sph/InteractionSet.hpp"
+#include "sph/Kernels.hpp"
+
+namespace sph {
+
+struct TermSwitches {
+  bool artificialViscosity = false;  // Lobovsky & Kren eq. (10)
+  bool morrisViscosity = false;      // eq. (9)
+  bool variableH = false;            // eq. (13)
+};
+
+template <int D>
+struct Derivatives {
+  std::vector<Vec<D>> dvdt;
+  std::vector<double> drhodt, dhdt;
+  void resize(std::size_t n) { dvdt.resize(n), drhodt.resize(n), dhdt.resize(n); }
+};
+
+template <int D>
+class ForceEvaluation {
+ public:
+  ForceEvaluation(KernelKind kernel, TermSwitches terms, double beta);
+
+  // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt.
+  // Body forces are not included. Each particle sums its own neighbours in a fixed order, so
+  // the result does not depend on the number of threads.
+  void operator()(const InteractionSet<D>& set, Derivatives<D>& out);
+
+  // Names of the terms the chosen loop evaluates, for the run file.
+  std::vector<std::string> termNames() const;
+  KernelKind kernel() const { return kernel_; }
+
+  struct Workspace;  // cell list and cell-sorted copies, kept between calls (no allocation per step)
+
+ private:
+  using Loop = void (*)(const InteractionSet<D>&, double beta, Workspace&, Derivatives<D>&);
+  KernelKind kernel_;
+  TermSwitches terms_;
+  double beta_;
+  Loop loop_;
+  std::shared_ptr<Workspace> work_;
+};
+
+}  // namespace sph

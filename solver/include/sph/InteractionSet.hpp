@@ -1,0 +1,47 @@
+#pragma once
+// Everything a fluid particle interacts with: the fluid particles themselves (first nFluid
+// entries), then their periodic images and ghost-wall mirrors (the halo). Rebuilt before every
+// force evaluation from the current fluid state.
+#include <cstddef>
+#include <vector>
+
+#include "sph/Boundaries.hpp"
+#include "sph/Particles.hpp"
+
+namespace sph {
+
+struct Phase;
+
+template <int D>
+struct InteractionSet {
+  std::vector<Vec<D>> x, v;
+  std::vector<double> rho, p, m, h, mu;
+  std::vector<int> source;  // the fluid particle an entry stands for
+  std::size_t nFluid = 0;
+
+  std::size_t size() const { return x.size(); }
+  void clear() {
+    x.clear(), v.clear(), rho.clear(), p.clear(), m.clear(), h.clear(), mu.clear(), source.clear();
+  }
+  void push(std::size_t k, const Vec<D>& xk, const Vec<D>& vk) {
+    x.push_back(xk), v.push_back(vk), rho.push_back(rho[k]), p.push_back(p[k]), m.push_back(m[k]);
+    h.push_back(h[k]), mu.push_back(mu[k]), source.push_back(source[k]);
+  }
+};
+
+// Copies the fluid state (pressure from the Tait EOS, viscosity from the phase) into `set`, then
+// appends the halo: for each axis in turn, every entry so far within `reach` of a periodic face
+// gets an image shifted by the period, and of a wall face a ghost mirrored across it (Libersky et
+// al. 1993; Colagrossi & Landrini 2003). Working axis by axis mirrors ghosts again at corners.
+// A ghost keeps its source's density and pressure; free slip reverses the normal velocity, no
+// slip the whole velocity, both relative to the wall's own velocity.
+// `ghostGravity` zero gives the paper's ghost (the source's pressure); the body acceleration g
+// gives the ghost the hydrostatic correction p_g = p + rho g . (x_g - x), which supplies the
+// rho g that a mirrored, even pressure field lacks at the wall (without it a particle at a free
+// surface next to the wall, where p ~ 0, is held up by nothing but artificial viscosity).
+template <int D>
+void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
+                         const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
+                         InteractionSet<D>& set);
+
+}  // namespace sph

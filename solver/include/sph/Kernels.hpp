@@ -1,0 +1,122 @@
+#pragma once
+// Smoothing kernels W(r, h) with compact support 2h, normalised so that the integral over R^D is one
+// (Lobovsky & Kren eq. 4). Each kernel is a small type with static members so that the pair loop
+// inlines it; the scene picks one by name (KernelKind).
+#include <cmath>
+#include <numbers>
+#include <string_view>
+
+namespace sph {
+
+// h^n for a small compile-time n, without std::pow's cost in the pair loop.
+template <int n>
+constexpr double ipow(double h) {
+  if constexpr (n == 0) return 1.0;
+  else return h * ipow<n - 1>(h);
+}
+
+enum class KernelKind { quadratic, cubic_spline, wendland_c2 };
+
+std::string_view name(KernelKind);
+
+// Lobovsky & Kren eq. (5): W = N_D / h^D (3/16 q^2 - 3/4 q + 3/4), 0 <= q = r/h <= 2.
+// N_1 = 1, N_2 = 2/pi, N_3 = 5/(4 pi). Its slope at q = 0 is -3/4 N_D / h^(D+1), not zero.
+struct QuadraticKernel {
+  static constexpr double support = 2.0;
+  static constexpr KernelKind kind = KernelKind::quadratic;
+  template <int D>
+  static constexpr double norm() {
+    if constexpr (D == 1) return 1.0;
+    if constexpr (D == 2) return 2.0 / std::numbers::pi;
+    return 5.0 / (4.0 * std::numbers::pi);
+  }
+  template <int D>
+  static double W(double r, double h) {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    return norm<D>() / ipow<D>(h) * (0.1875 * q * q - 0.75 * q + 0.75);
+  }
+  template <int D>
+  static double dWdr(double r, double h) {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    return norm<D>() / ipow<D + 1>(h) * (0.375 * q - 0.75);
+  }
+};
+
+// Monaghan & Lattanzio (1985) cubic B-spline, support 2h.
+struct CubicSplineKernel {
+  static constexpr double support = 2.0;
+  static constexpr KernelKind kind = KernelKind::cubic_spline;
+  template <int D>
+  static constexpr double norm() {
+    if constexpr (D == 1) return 2.0 / 3.0;
+    if constexpr (D == 2) return 10.0 / (7.0 * std::numbers::pi);
+    return 1.0 / std::numbers::pi;
+  }
+  template <int D>
+  static double W(double r, double h) {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double f = q < 1.0 ? 1.0 - 1.5 * q * q + 0.75 * q * q * q : 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
+    return norm<D>() / ipow<D>(h) * f;
+  }
+  template <int D>
+  static double dWdr(double r, double h) {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double df = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
+    return norm<D>() / ipow<D + 1>(h) * df;
+  }
+};
+
+// Wendland (1995) C2, support 2h (the packing paper's kernel). In 2-D and 3-D
+// W = sigma / h^D (1 - q/2)^4 (2q + 1); in 1-D the C2 function is (1 - q/2)^3 (1.5q + 1).
+struct WendlandC2Kernel {
+  static constexpr double support = 2.0;
+  static constexpr KernelKind kind = KernelKind::wendland_c2;
+  template <int D>
+  static constexpr double norm() {
+    if constexpr (D == 1) return 5.0 / 8.0;
+    if constexpr (D == 2) return 7.0 / (4.0 * std::numbers::pi);
+    return 21.0 / (16.0 * std::numbers::pi);
+  }
+  template <int D>
+  static double W(double r, double h) {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double s = 1.0 - 0.5 * q;
+    if constexpr (D == 1) return norm<D>() / h * s * s * s * (1.5 * q + 1.0);
+    return norm<D>() / ipow<D>(h) * s * s * s * s * (2.0 * q + 1.0);
+  }
+  template <int D>
+  static double dWdr(double r, double h) {
+    const double q = r / h;
+    if (q >= 2.0) return 0.0;
+    const double s = 1.0 - 0.5 * q;
+    if constexpr (D == 1) return norm<D>() / (h * h) * (-3.0 * q * s * s);
+    return norm<D>() / ipow<D + 1>(h) * (-5.0 * q * s * s * s);
+  }
+};
+
+// Calls f(Kernel{}) with the kernel type that `kind` names.
+template <class F>
+decltype(auto) withKernel(KernelKind kind, F&& f) {
+  switch (kind) {
+    case KernelKind::quadratic: return f(QuadraticKernel{});
+    case KernelKind::cubic_spline: return f(CubicSplineKernel{});
+    default: return f(WendlandC2Kernel{});
+  }
+}
+
+// Value of `kind`'s kernel, for code outside the pair loop (probes, tests).
+template <int D>
+double kernelValue(KernelKind kind, double r, double h) {
+  return withKernel(kind, [&](auto k) { return decltype(k)::template W<D>(r, h); });
+}
+template <int D>
+double kernelSlope(KernelKind kind, double r, double h) {
+  return withKernel(kind, [&](auto k) { return decltype(k)::template dWdr<D>(r, h); });
+}
+
+}  // namespace sph

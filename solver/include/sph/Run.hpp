@@ -1,0 +1,28 @@
+#pragma once
+// Runs a checked scene to its end time and writes its run file. Exit codes of the `sph` program.
+#include <string>
+
+#include "sph/Scene.hpp"
+
+namespace sph {
+
+enum ExitCode { exitDone = 0, exitBadInput = 2, exitNumericalFailure = 3 };
+
+struct RunOptions {
+  std::string outDir = ".";
+  int threads = 0;        // 0: OpenMP's default
+  bool progress = false;  // a progress line on stderr (only on a terminal)
+  bool quiet = false;
+};
+
+// Returns exitDone, or exitNumericalFailure when the run stopped on a failure (the run file then
+// keeps the series so far and the last good state as its final snapshot).
+int runScene(const Scene& scene, const RunOptions& options);
+
+// Build and machine facts written into every run file.
+struct Provenance {
+  std::string version, commit, compiler, flags, buildType, machine, date;
+};
+Provenance provenance();
+
+}  // namespace sph

@@ -1,0 +1,54 @@
+#pragma once
+// One HDF5 file per run (layout: reports/SCHEMA.md) and an XDMF sidecar so that ParaView opens
+// the snapshots as a time series. Flushed at every snapshot so that a killed run keeps what it
+// wrote.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+struct SeriesColumn {
+  std::string name;
+  std::vector<double> values;  // buffered until the next flush
+  std::string type, units;     // written as attributes (probes)
+};
+
+struct SnapshotFields {
+  std::vector<double> position, velocity;  // N x 3, unused axes zero
+  std::vector<double> density, pressure, h, mass;
+  std::vector<std::int32_t> phase;
+};
+
+class RunFile {
+ public:
+  explicit RunFile(const std::string& path);  // creates or truncates
+  ~RunFile();
+  RunFile(const RunFile&) = delete;
+  RunFile& operator=(const RunFile&) = delete;
+
+  void attribute(const std::string& name, const std::string& value, const std::string& group = "/");
+  void attribute(const std::string& name, double value, const std::string& group = "/");
+  void attribute(const std::string& name, std::int64_t value, const std::string& group = "/");
+  void text(const std::string& dataset, const std::string& value);
+
+  // Appends the buffered values of each column to /series/<name> and empties the buffers.
+  void appendSeries(std::vector<SeriesColumn>& columns);
+  void snapshot(double time, std::int64_t step, const SnapshotFields& f, bool lastGood = false);
+  void flush();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  void writeXdmf() const;
+  std::string path_;
+  std::int64_t file_ = -1;
+  struct Entry {
+    std::string group;
+    double time;
+    std::size_t n;
+  };
+  std::vector<Entry> snapshots_;
+};
+
+}  // namespace sph

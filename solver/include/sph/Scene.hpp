@@ -1,0 +1,69 @@
+#pragma once
+// A checked scene: everything a run needs, read from a TOML scene file. Dimension-free (vectors
+// hold `dimension` entries); Simulation<D> builds the particles from it.
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sph/Boundaries.hpp"
+#include "sph/EquationOfState.hpp"
+#include "sph/ForceEvaluation.hpp"
+#include "sph/Kernels.hpp"
+
+namespace sph {
+
+// Bad input: the message names the file, the key and what is wrong.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct FluidBlock {
+  enum class Shape { rectangle, circle } shape = Shape::rectangle;
+  std::vector<double> lower, upper;   // rectangle
+  std::vector<double> center;         // circle (a disc in 2-D, a ball in 3-D)
+  double radius = 0.0;
+  int phase = 0;
+  std::vector<double> velocity;
+  bool hydrostatic = false;  // start at p = rho0 |g| (surface - y), density from the inverse EOS
+  double surface = 0.0;      // free-surface height for the hydrostatic start (default: block top)
+};
+
+struct Probe {
+  std::string name, type;  // surge_front, column_height, pressure, water_level
+  std::vector<double> position;  // pressure: the point
+  double x = 0.0;                // water_level: gauge position; column_height: band 0..x from the lower wall
+};
+
+struct Scene {
+  std::string name, file, text;
+  int dimension = 2;
+  std::vector<double> lower, upper;
+  std::array<std::array<FaceKind, 2>, 3> faces{};
+  std::array<std::array<std::vector<double>, 2>, 3> wallVelocity{};
+  bool hydrostaticGhosts = false;  // ghost pressure: the source's (paper) or hydrostatically corrected
+  std::vector<Phase> phases;
+  std::vector<FluidBlock> fluids;
+  std::vector<double> bodyAcceleration;  // gravity plus any driving force, F/rho [m/s^2]
+  TermSwitches terms;
+  double beta = 0.0;  // artificial viscosity, eq. (10)
+  KernelKind kernel = KernelKind::quadratic;
+  double dx = 0.0, hOverDx = 1.33;
+  double cflAcoustic = 0.25, cflViscous = 0.125, cflForce = 0.25;  // Morris et al. 1997
+  double endTime = 0.0;
+  std::array<double, 2> densityBand{0.8, 1.2};  // a run fails when rho/rho0 leaves this band
+  double dtFloor = 0.0;                          // a run fails when dt falls below (0: 1e-4 of the first dt)
+  double snapshotInterval = 0.0;                 // 0: first and last only
+  int seriesEvery = 1;                           // record the time series every n steps
+  std::vector<Probe> probes;
+  std::vector<std::string> warnings;
+
+  double h0() const { return hOverDx * dx; }
+};
+
+// Reads and checks a scene file. Throws SceneError naming the file, the key and the problem.
+Scene readScene(const std::string& path);
+// The same, from text (tests); `file` names it in messages.
+Scene parseScene(const std::string& text, const std::string& file);
+
+}  // namespace sph

@@ -1,0 +1,64 @@
+#include "sph/InteractionSet.hpp"
+
+#include "sph/EquationOfState.hpp"
+
+namespace sph {
+
+template <int D>
+void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
+                         const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
+                         InteractionSet<D>& set) {
+  const std::size_t n = fluid.size();
+  set.clear();
+  set.nFluid = n;
+  set.x = fluid.r, set.v = fluid.v, set.rho = fluid.rho, set.m = fluid.m, set.h = fluid.h;
+  set.p.resize(n), set.mu.resize(n), set.source.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Phase& ph = phases[fluid.phase[i]];
+    set.p[i] = TaitEquationOfState::pressure(fluid.rho[i], ph);
+    set.mu[i] = ph.mu;
+    set.source[i] = static_cast<int>(i);
+  }
+  for (int a = 0; a < D; ++a) {
+    const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
+    const std::size_t count = set.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      for (int side = 0; side < 2; ++side) {
+        const FaceKind kind = bounds.face[a][side];
+        if (kind == FaceKind::open) continue;
+        const double xa = set.x[k][a];
+        const double distance = side == 0 ? xa - lo : hi - xa;
+        if (distance >= reach) continue;
+        Vec<D> xg = set.x[k], vg = set.v[k];
+        double pg = set.p[k];
+        if (kind == FaceKind::periodic) {
+          xg[a] += side == 0 ? period : -period;
+        } else {
+          pg += set.rho[k] * ghostGravity[a] * (2.0 * (side == 0 ? lo : hi) - 2.0 * xa);
+          const double wall = side == 0 ? lo : hi;
+          const Vec<D>& vw = bounds.wallVelocity[a][side];
+          xg[a] = 2.0 * wall - xa;
+          if (kind == FaceKind::no_slip) {
+            vg = 2.0 * vw - vg;
+          } else {
+            vg[a] = 2.0 * vw[a] - vg[a];
+          }
+        }
+        set.push(k, xg, vg);
+        set.p.back() = pg;
+      }
+    }
+  }
+}
+
+template void buildInteractionSet<1>(const Particles<1>&, const std::vector<Phase>&,
+                                     const Boundaries<1>&, double, const Vec<1>&,
+                                     InteractionSet<1>&);
+template void buildInteractionSet<2>(const Particles<2>&, const std::vector<Phase>&,
+                                     const Boundaries<2>&, double, const Vec<2>&,
+                                     InteractionSet<2>&);
+template void buildInteractionSet<3>(const Particles<3>&, const std::vector<Phase>&,
+                                     const Boundaries<3>&, double, const Vec<3>&,
+                                     InteractionSet<3>&);
+
+}  // namespace sph

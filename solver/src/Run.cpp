@@ -1,0 +1,182 @@
+#include "sph/Run.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "sph/Diagnostics.hpp"
+#include "sph/RunFile.hpp"
+#include "sph/Simulation.hpp"
+
+namespace sph {
+
+namespace {
+
+template <int D>
+SnapshotFields fieldsOf(const Particles<D>& s) {
+  SnapshotFields f;
+  const std::size_t n = s.size();
+  f.position.assign(3 * n, 0.0), f.velocity.assign(3 * n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int a = 0; a < D; ++a) f.position[3 * i + a] = s.r[i][a], f.velocity[3 * i + a] = s.v[i][a];
+  f.density = s.rho, f.pressure = s.p, f.h = s.h, f.mass = s.m;
+  f.phase.assign(s.phase.begin(), s.phase.end());
+  return f;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& s : v) out += (out.empty() ? "" : ",") + s;
+  return out;
+}
+
+// The time series of a run: fixed columns, one per phase, one per probe (reports/SCHEMA.md).
+class Series {
+ public:
+  explicit Series(const Scene& scene) {
+    for (const char* n : {"time", "dt", "step", "dt_limiter", "kinetic_energy", "max_speed",
+                          "rho_min", "rho_max", "volume_error"})
+      columns.push_back({n, {}, "", ""});
+    for (const auto& ph : scene.phases) columns.push_back({"volume_error_" + ph.name, {}, "", ""});
+    for (const auto& p : scene.probes)
+      columns.push_back({"probe_" + p.name, {}, p.type, p.type == "pressure" ? "Pa" : "m"});
+    maxVariation.assign(scene.phases.size() + 1, 0.0);
+  }
+  void record(double t, double dt, long step, int limiter, const Diagnostics& d) {
+    if (volume0.empty()) volume0 = d.phaseVolume, total0 = d.volume;
+    std::vector<double> row{t, dt, double(step), double(limiter), d.kineticEnergy, d.maxSpeed,
+                            d.rhoMin, d.rhoMax, d.volume / total0 - 1.0};
+    for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
+      row.push_back(volume0[k] > 0 ? d.phaseVolume[k] / volume0[k] - 1.0 : 0.0);
+    row.insert(row.end(), d.probes.begin(), d.probes.end());
+    for (std::size_t k = 0; k < columns.size(); ++k) columns[k].values.push_back(row[k]);
+    maxVariation[0] = std::max(maxVariation[0], std::abs(row[8]));
+    for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
+      maxVariation[k + 1] = std::max(maxVariation[k + 1], std::abs(row[9 + k]));
+  }
+  std::vector<SeriesColumn> columns;
+  std::vector<double> volume0, maxVariation;  // [0]: all fluid, [1 + k]: phase k
+  double total0 = 0;
+};
+
+template <int D>
+int run(const Scene& scene, const RunOptions& opt) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  Simulation<D> sim(scene);
+  if (sim.particles().size() == 0) {
+    std::cerr << scene.file << ": the fluid blocks hold no particles at dx = " << scene.dx << "\n";
+    return exitBadInput;
+  }
+  std::filesystem::create_directories(opt.outDir);
+  RunFile file((std::filesystem::path(opt.outDir) / (scene.name + ".h5")).string());
+  const Provenance p = provenance();
+  file.attribute("sph_version", p.version), file.attribute("git_commit", p.commit);
+  file.attribute("compiler", p.compiler), file.attribute("cxx_flags", p.flags);
+  file.attribute("build_type", p.buildType), file.attribute("machine", p.machine);
+  file.attribute("date", p.date);
+  file.attribute("threads", std::int64_t(omp_get_max_threads()));
+  file.attribute("scene_name", scene.name), file.attribute("scene_file", scene.file);
+  file.attribute("dimension", std::int64_t(D));
+  file.attribute("kernel", std::string(name(scene.kernel)));
+  file.attribute("terms", join(sim.termNames()));
+  file.attribute("status", std::string("running"));
+  file.text("/scene", scene.text);
+
+  Series series(scene);
+  auto record = [&] {
+    series.record(sim.time(), sim.lastDt(), sim.step(), int(sim.lastLimit()),
+                  diagnose<D>(scene, sim.particles(), sim.interactionSet()));
+  };
+  auto snapshot = [&](bool lastGood) {
+    file.appendSeries(series.columns);
+    file.snapshot(sim.time(), sim.step(), fieldsOf(sim.particles()), lastGood);
+  };
+  sim.prepare();
+  record();
+  snapshot(false);
+  double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
+  const bool progress = opt.progress && isatty(STDERR_FILENO);
+  auto lastPrint = clock::now();
+  const long step0 = sim.step();
+  std::optional<Failure> failure;
+  while (sim.time() < scene.endTime * (1 - 1e-12)) {
+    failure = sim.advance(std::min(nextSnapshot, scene.endTime) - sim.time());
+    if (failure) break;
+    const bool atSnapshot = sim.time() >= nextSnapshot * (1 - 1e-12);
+    if (atSnapshot || sim.step() % scene.seriesEvery == 0) record();
+    if (atSnapshot) {
+      snapshot(false);
+      nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
+    }
+    if (progress && clock::now() - lastPrint > std::chrono::milliseconds(500)) {
+      lastPrint = clock::now();
+      const double wall = std::chrono::duration<double>(lastPrint - start).count();
+      const double rate = (sim.step() - step0) / wall;
+      const double eta = wall * (scene.endTime - sim.time()) / std::max(sim.time(), 1e-30);
+      std::fprintf(stderr, "\r  t = %.4g / %.4g s   step %ld   %.0f steps/s   ETA %.0f s   ",
+                   sim.time(), scene.endTime, sim.step(), rate, eta);
+    }
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  const double wall = std::chrono::duration<double>(clock::now() - start).count();
+  if (failure) {
+    file.attribute("status", std::string("unstable"));
+    file.attribute("failure_cause", std::string(name(failure->cause)));
+    file.attribute("failure", failure->message);
+    snapshot(true);
+  } else {
+    file.attribute("status", std::string("stable"));
+    file.attribute("failure_cause", std::string());
+    file.attribute("failure", std::string());
+    file.appendSeries(series.columns);
+  }
+  const std::string m = "/metrics";
+  file.attribute("wall_time_s", wall, m);
+  file.attribute("steps", std::int64_t(sim.step()), m);
+  file.attribute("particles", std::int64_t(sim.particles().size()), m);
+  file.attribute("end_time", sim.time(), m);
+  file.attribute("force_evaluations", std::int64_t(sim.forceEvaluations()), m);
+  file.attribute("wall_reflections", std::int64_t(sim.wallReflections()), m);
+  file.attribute("particle_evaluations_per_s",
+                 double(sim.forceEvaluations()) * sim.particles().size() / wall, m);
+  file.attribute("max_volume_variation", series.maxVariation[0], m);
+  for (std::size_t k = 0; k < scene.phases.size(); ++k)
+    file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
+  file.flush();
+
+  if (!opt.quiet) {
+    std::printf("%s: %s at t = %.6g s after %ld steps, %zu particles, wall time %.2f s\n",
+                scene.name.c_str(), failure ? "UNSTABLE" : "done", sim.time(), sim.step(),
+                sim.particles().size(), wall);
+    std::printf("  max volume variation %.4f %%", 100 * series.maxVariation[0]);
+    for (std::size_t k = 0; k < scene.phases.size(); ++k)
+      std::printf("   %s %.4f %%", scene.phases[k].name.c_str(), 100 * series.maxVariation[k + 1]);
+    std::printf("\n  wall reflections %ld\n  run file %s\n", sim.wallReflections(),
+                file.path().c_str());
+  }
+  if (failure) {
+    std::cerr << scene.file << ": numerical failure (" << name(failure->cause)
+              << "): " << failure->message << "\n";
+    return exitNumericalFailure;
+  }
+  return exitDone;
+}
+
+}  // namespace
+
+int runScene(const Scene& scene, const RunOptions& options) {
+  if (options.threads > 0) omp_set_num_threads(options.threads);
+  switch (scene.dimension) {
+    case 1: return run<1>(scene, options);
+    case 2: return run<2>(scene, options);
+    default: return run<3>(scene, options);
+  }
+}
+
+}  // namespace sph

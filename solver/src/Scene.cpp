@@ -1,0 +1,421 @@
+#include "sph/Scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace sph {
+
+std::string_view name(KernelKind k) {
+  switch (k) {
+    case KernelKind::quadratic: return "quadratic";
+    case KernelKind::cubic_spline: return "cubic_spline";
+    default: return "wendland_c2";
+  }
+}
+
+std::string_view name(FaceKind k) {
+  switch (k) {
+    case FaceKind::open: return "open";
+    case FaceKind::free_slip: return "free_slip";
+    case FaceKind::no_slip: return "no_slip";
+    default: return "periodic";
+  }
+}
+
+namespace {
+
+const char* axisName[3] = {"x", "y", "z"};
+
+// A view of one TOML table that knows its dotted path, reports errors against the file and the
+// key, and remembers which keys were read so that unknown (misspelt) keys are rejected.
+class Table {
+ public:
+  Table(const toml::table& t, std::string path, const std::string& file)
+      : t_(t), path_(std::move(path)), file_(file) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw SceneError(file_ + ": key '" + full(key) + "': " + what);
+  }
+  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  bool has(const std::string& key) {
+    used_.insert(key);
+    return t_.contains(key);
+  }
+
+  double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(key, "missing value (a number)");
+    }
+    if (auto v = n->value<double>()) {
+      if (!std::isfinite(*v)) fail(key, "must be a finite number");
+      return *v;
+    }
+    fail(key, std::string("wrong type: expected a number, got ") + typeName(*n));
+  }
+  double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (!(v > 0.0)) fail(key, "must be positive, got " + fmt(v));
+    return v;
+  }
+  double nonNegative(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (v < 0.0) fail(key, "must not be negative, got " + fmt(v));
+    return v;
+  }
+  std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(key, "missing value (a string)");
+    }
+    if (auto v = n->value<std::string>()) return *v;
+    fail(key, std::string("wrong type: expected a string, got ") + typeName(*n));
+  }
+  bool boolean(const std::string& key, bool fallback) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) return fallback;
+    if (auto v = n->value<bool>()) return *v;
+    fail(key, std::string("wrong type: expected true or false, got ") + typeName(*n));
+  }
+  std::vector<double> vector(const std::string& key, int size,
+                             std::optional<std::vector<double>> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(key, "missing value (an array of " + std::to_string(size) + " numbers)");
+    }
+    const toml::array* a = n->as_array();
+    if (!a) fail(key, std::string("wrong type: expected an array of numbers, got ") + typeName(*n));
+    if (static_cast<int>(a->size()) != size)
+      fail(key, "expected " + std::to_string(size) + " numbers (one per dimension), got " +
+                    std::to_string(a->size()));
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      auto v = e.value<double>();
+      if (!v || !std::isfinite(*v)) fail(key, "every entry must be a finite number");
+      out.push_back(*v);
+    }
+    return out;
+  }
+  Table sub(const std::string& key) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) return Table(empty(), full(key), file_);
+    if (!n->is_table()) fail(key, std::string("wrong type: expected a table, got ") + typeName(*n));
+    return Table(*n->as_table(), full(key), file_);
+  }
+  std::vector<Table> array(const std::string& key) {
+    used_.insert(key);
+    std::vector<Table> out;
+    const toml::node* n = t_.get(key);
+    if (!n) return out;
+    const toml::array* a = n->as_array();
+    if (!a || !a->is_array_of_tables())
+      fail(key, "wrong type: expected an array of tables ([[" + full(key) + "]])");
+    for (std::size_t i = 0; i < a->size(); ++i)
+      out.emplace_back(*(*a)[i].as_table(), full(key) + "[" + std::to_string(i) + "]", file_);
+    return out;
+  }
+  // Call after reading a table: any key never asked for is unknown.
+  void rejectUnknown() const {
+    for (const auto& [k, v] : t_)
+      if (!used_.count(std::string(k.str()))) fail(std::string(k.str()), "unknown key");
+  }
+
+ private:
+  static const toml::table& empty() {
+    static const toml::table e;
+    return e;
+  }
+  static const char* typeName(const toml::node& n) {
+    switch (n.type()) {
+      case toml::node_type::string: return "a string";
+      case toml::node_type::integer: return "an integer";
+      case toml::node_type::floating_point: return "a number";
+      case toml::node_type::boolean: return "a boolean";
+      case toml::node_type::array: return "an array";
+      case toml::node_type::table: return "a table";
+      default: return "a date or time";
+    }
+  }
+  static std::string fmt(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+  const toml::table& t_;
+  std::string path_;
+  const std::string& file_;
+  std::set<std::string> used_;
+};
+
+FaceKind faceKind(Table& t, const std::string& key, const std::string& value) {
+  if (value == "open") return FaceKind::open;
+  if (value == "free_slip") return FaceKind::free_slip;
+  if (value == "no_slip") return FaceKind::no_slip;
+  if (value == "periodic") return FaceKind::periodic;
+  t.fail(key, "unknown boundary '" + value + "' (expected open, free_slip, no_slip or periodic)");
+}
+
+void readDomain(Table domain, Scene& s) {
+  const int D = s.dimension;
+  s.lower = domain.vector("lower", D);
+  s.upper = domain.vector("upper", D);
+  for (int a = 0; a < D; ++a)
+    if (!(s.upper[a] > s.lower[a]))
+      domain.fail("upper", std::string("must exceed 'lower' along ") + axisName[a]);
+  Table velocity = domain.sub("wall_velocity");
+  for (int a = 0; a < D; ++a) {
+    const std::string axis = axisName[a];
+    std::vector<std::string> kinds(2);
+    kinds[0] = domain.string(axis + "_lower", "open");
+    kinds[1] = domain.string(axis + "_upper", "open");
+    for (int side = 0; side < 2; ++side) {
+      const std::string key = axis + (side == 0 ? "_lower" : "_upper");
+      s.faces[a][side] = faceKind(domain, key, kinds[side]);
+      s.wallVelocity[a][side] = velocity.vector(key, D, std::vector<double>(D, 0.0));
+      if (s.faces[a][side] != FaceKind::no_slip && velocity.has(key))
+        velocity.fail(key, "a wall velocity needs a no_slip face");
+    }
+    if ((s.faces[a][0] == FaceKind::periodic) != (s.faces[a][1] == FaceKind::periodic))
+      domain.fail(axis + "_lower", "periodic must be set on both faces of an axis");
+  }
+  const std::string ghost = domain.string("ghost_pressure", "mirror");
+  if (ghost != "mirror" && ghost != "hydrostatic")
+    domain.fail("ghost_pressure", "expected \"mirror\" or \"hydrostatic\", got '" + ghost + "'");
+  s.hydrostaticGhosts = ghost == "hydrostatic";
+  velocity.rejectUnknown();
+  domain.rejectUnknown();
+}
+
+void readPhases(std::vector<Table> phases, Scene& s, Table& top) {
+  if (phases.empty()) top.fail("phase", "missing: at least one [[phase]] table");
+  std::set<std::string> names;
+  for (auto& t : phases) {
+    Phase p;
+    p.name = t.string("name");
+    if (!names.insert(p.name).second) t.fail("name", "phase '" + p.name + "' defined twice");
+    p.rho0 = t.positive("rho0");
+    p.c0 = t.positive("c0");
+    p.mu = t.nonNegative("mu", 0.0);
+    p.p0 = t.number("p0", 0.0);
+    p.gamma = t.positive("gamma", 7.0);
+    t.rejectUnknown();
+    s.phases.push_back(p);
+  }
+}
+
+int phaseIndex(Table& t, const Scene& s) {
+  const std::string name = t.string("phase", s.phases.size() == 1 ? s.phases[0].name : std::string());
+  for (std::size_t i = 0; i < s.phases.size(); ++i)
+    if (s.phases[i].name == name) return static_cast<int>(i);
+  t.fail("phase", "no [[phase]] named '" + name + "'");
+}
+
+// Bounding box of a block, for the inside-the-walls and overlap checks.
+void bounds(const FluidBlock& b, int D, std::vector<double>& lo, std::vector<double>& hi) {
+  lo.resize(D), hi.resize(D);
+  for (int a = 0; a < D; ++a) {
+    lo[a] = b.shape == FluidBlock::Shape::rectangle ? b.lower[a] : b.center[a] - b.radius;
+    hi[a] = b.shape == FluidBlock::Shape::rectangle ? b.upper[a] : b.center[a] + b.radius;
+  }
+}
+
+bool overlap(const FluidBlock& a, const FluidBlock& b, int D) {
+  using S = FluidBlock::Shape;
+  if (a.shape == S::circle && b.shape == S::circle) {
+    double d2 = 0;
+    for (int k = 0; k < D; ++k) d2 += std::pow(a.center[k] - b.center[k], 2);
+    return std::sqrt(d2) < a.radius + b.radius;
+  }
+  if (a.shape == S::circle || b.shape == S::circle) {
+    const FluidBlock& c = a.shape == S::circle ? a : b;
+    const FluidBlock& r = a.shape == S::circle ? b : a;
+    double d2 = 0;  // distance from the centre to the rectangle
+    for (int k = 0; k < D; ++k) {
+      const double q = std::clamp(c.center[k], r.lower[k], r.upper[k]);
+      d2 += std::pow(c.center[k] - q, 2);
+    }
+    return std::sqrt(d2) < c.radius;
+  }
+  for (int k = 0; k < D; ++k)  // touching faces are allowed (two fluids side by side)
+    if (a.upper[k] <= b.lower[k] || b.upper[k] <= a.lower[k]) return false;
+  return true;
+}
+
+void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
+  const int D = s.dimension;
+  if (fluids.empty()) top.fail("fluid", "missing: at least one [[fluid]] block");
+  for (auto& t : fluids) {
+    FluidBlock b;
+    const std::string shape = t.string("shape", "rectangle");
+    if (shape == "rectangle") {
+      b.lower = t.vector("lower", D);
+      b.upper = t.vector("upper", D);
+      for (int a = 0; a < D; ++a)
+        if (!(b.upper[a] > b.lower[a])) t.fail("upper", "must exceed 'lower' in every axis");
+    } else if (shape == "circle") {
+      b.shape = FluidBlock::Shape::circle;
+      b.center = t.vector("center", D);
+      b.radius = t.positive("radius");
+    } else {
+      t.fail("shape", "unknown shape '" + shape + "' (expected rectangle or circle)");
+    }
+    b.phase = phaseIndex(t, s);
+    b.velocity = t.vector("velocity", D, std::vector<double>(D, 0.0));
+    const std::string pressure = t.string("initial_pressure", "zero");
+    if (pressure == "hydrostatic") {
+      b.hydrostatic = true;
+    } else if (pressure != "zero") {
+      t.fail("initial_pressure", "expected \"zero\" or \"hydrostatic\", got '" + pressure + "'");
+    }
+    std::vector<double> lo, hi;
+    bounds(b, D, lo, hi);
+    b.surface = t.number("surface", hi[D - 1]);
+    for (int a = 0; a < D; ++a)
+      if (lo[a] < s.lower[a] - 1e-12 || hi[a] > s.upper[a] + 1e-12)
+        t.fail(shape == "circle" ? "center" : "lower",
+               std::string("the fluid block lies outside the domain along ") + axisName[a]);
+    t.rejectUnknown();
+    for (std::size_t k = 0; k < s.fluids.size(); ++k)
+      if (overlap(b, s.fluids[k], D))
+        t.fail("shape", "this block overlaps fluid block " + std::to_string(k));
+    s.fluids.push_back(b);
+  }
+}
+
+KernelKind kernelKind(Table& t, const std::string& v) {
+  if (v == "quadratic") return KernelKind::quadratic;
+  if (v == "cubic_spline") return KernelKind::cubic_spline;
+  if (v == "wendland_c2") return KernelKind::wendland_c2;
+  t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
+}
+
+void readProbes(std::vector<Table> probes, Scene& s) {
+  std::set<std::string> names;
+  for (auto& t : probes) {
+    Probe p;
+    p.name = t.string("name");
+    if (!names.insert(p.name).second) t.fail("name", "probe '" + p.name + "' defined twice");
+    p.type = t.string("type");
+    if (p.type == "pressure") {
+      p.position = t.vector("position", s.dimension);
+    } else if (p.type == "water_level" || p.type == "column_height") {
+      p.x = t.number("x");
+    } else if (p.type != "surge_front") {
+      t.fail("type", "unknown probe type '" + p.type +
+                         "' (expected surge_front, column_height, pressure or water_level)");
+    }
+    t.rejectUnknown();
+    s.probes.push_back(p);
+  }
+}
+
+// Mach number check (Lobovsky & Kren, below eq. 8): c0 >= 10 max|v| keeps density variations
+// near 1 %. The expected speed is the larger of the initial speeds and the free-fall speed
+// sqrt(2 g H) over the fluid's height.
+void warnOnLowSoundSpeed(Scene& s) {
+  const int D = s.dimension;
+  double g = 0;
+  for (double c : s.bodyAcceleration) g += c * c;
+  g = std::sqrt(g);
+  double top = -1e300, bottom = 1e300, vmax = 0;
+  for (const auto& b : s.fluids) {
+    std::vector<double> lo, hi;
+    bounds(b, D, lo, hi);
+    top = std::max(top, hi[D - 1]);
+    bottom = std::min(bottom, s.lower[D - 1]);
+    double v2 = 0;
+    for (double c : b.velocity) v2 += c * c;
+    vmax = std::max(vmax, std::sqrt(v2));
+  }
+  const double expected = std::max(vmax, std::sqrt(2 * g * (top - bottom)));
+  for (const auto& p : s.phases)
+    if (p.c0 < 10 * expected) {
+      std::ostringstream m;
+      m << s.file << ": warning: phase '" << p.name << "' has c0 = " << p.c0
+        << " m/s, below 10x the expected max speed " << expected << " m/s (Mach > 0.1)";
+      s.warnings.push_back(m.str());
+    }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& text, const std::string& file) {
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream m;
+    m << file << ":" << e.source().begin.line << ":" << e.source().begin.column
+      << ": malformed TOML: " << e.description();
+    throw SceneError(m.str());
+  }
+  Scene s;
+  s.file = file;
+  s.text = text;
+  Table top(root, "", s.file);
+  s.name = top.string("name");
+  top.string("description", "");
+  s.dimension = static_cast<int>(top.number("dimension"));
+  if (s.dimension < 1 || s.dimension > 3) top.fail("dimension", "must be 1, 2 or 3");
+  const int D = s.dimension;
+  readDomain(top.sub("domain"), s);
+  readPhases(top.array("phase"), s, top);
+  readFluids(top.array("fluid"), s, top);
+
+  Table physics = top.sub("physics");
+  s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
+  const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
+  for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
+  s.beta = physics.nonNegative("artificial_viscosity", 0.0);
+  s.terms.artificialViscosity = s.beta > 0.0;
+  s.terms.morrisViscosity = physics.boolean("morris_viscosity", false);
+  s.terms.variableH = physics.boolean("variable_h", false);
+  physics.rejectUnknown();
+
+  Table numerics = top.sub("numerics");
+  s.kernel = kernelKind(numerics, numerics.string("kernel", "quadratic"));
+  s.dx = numerics.positive("dx");
+  s.hOverDx = numerics.positive("h_over_dx", 1.33);
+  s.cflAcoustic = numerics.positive("cfl_acoustic", 0.25);
+  s.cflViscous = numerics.positive("cfl_viscous", 0.125);
+  s.cflForce = numerics.positive("cfl_force", 0.25);
+  s.endTime = numerics.positive("end_time");
+  const auto band = numerics.vector("density_band", 2, std::vector<double>{0.8, 1.2});
+  if (!(band[0] > 0 && band[0] < 1 && band[1] > 1))
+    numerics.fail("density_band", "expected [low, high] with 0 < low < 1 < high (rho/rho0)");
+  s.densityBand = {band[0], band[1]};
+  s.dtFloor = numerics.nonNegative("dt_floor", 0.0);
+  numerics.rejectUnknown();
+  for (int a = 0; a < D; ++a)
+    if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
+
+  Table output = top.sub("output");
+  s.snapshotInterval = output.nonNegative("snapshot_interval", 0.0);
+  s.seriesEvery = static_cast<int>(output.positive("series_every", 1.0));
+  output.rejectUnknown();
+  readProbes(top.array("probe"), s);
+  top.rejectUnknown();
+  warnOnLowSoundSpeed(s);
+  return s;
+}
+
+Scene readScene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parseScene(buffer.str(), path);
+}
+
+}  // namespace sph

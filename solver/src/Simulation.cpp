@@ -1,0 +1,225 @@
+#include "sph/Simulation.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "sph/EquationOfState.hpp"
+#include "sph/InitialParticles.hpp"
+
+namespace sph {
+
+std::string_view name(FailureCause c) {
+  switch (c) {
+    case FailureCause::nan: return "nan";
+    case FailureCause::density_band: return "density_band";
+    case FailureCause::escaped_domain: return "escaped_domain";
+    case FailureCause::wall_penetration: return "wall_penetration";
+    default: return "dt_collapse";
+  }
+}
+
+namespace {
+template <int D>
+Boundaries<D> boundariesOf(const Scene& s) {
+  Boundaries<D> b;
+  for (int a = 0; a < D; ++a) {
+    b.lower[a] = s.lower[a], b.upper[a] = s.upper[a];
+    for (int side = 0; side < 2; ++side) {
+      b.face[a][side] = s.faces[a][side];
+      for (int k = 0; k < D; ++k) b.wallVelocity[a][side][k] = s.wallVelocity[a][side][k];
+    }
+  }
+  return b;
+}
+}  // namespace
+
+template <int D>
+Simulation<D>::Simulation(const Scene& scene) : Simulation(scene, latticeParticles<D>(scene)) {}
+
+template <int D>
+Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
+    : scene_(scene),
+      bounds_(boundariesOf<D>(scene)),
+      forces_(scene.kernel, scene.terms, scene.beta),
+      y_(std::move(initial)) {
+  for (std::size_t i = 0; i < y_.size(); ++i)
+    y_.p[i] = TaitEquationOfState::pressure(y_.rho[i], scene_.phases[y_.phase[i]]);
+}
+
+template <int D>
+std::vector<std::string> Simulation<D>::termNames() const {
+  auto names = forces_.termNames();
+  double g = 0;
+  for (double c : scene_.bodyAcceleration) g += std::abs(c);
+  if (g > 0) names.push_back("body_force");
+  if (bounds_.anyWall()) names.push_back("ghost_walls");
+  if (bounds_.anyPeriodic()) names.push_back("periodic");
+  if (source_) names.push_back("source");
+  return names;
+}
+
+template <int D>
+void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& out) {
+  double hMax = 0;
+  for (double h : state.h) hMax = std::max(hMax, h);
+  Vec<D> g;
+  for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
+  const Vec<D> ghostGravity = scene_.hydrostaticGhosts ? g : Vec<D>::Zero();
+  buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax, ghostGravity, set_);
+  forces_(set_, out);
+  for (auto& a : out.dvdt) a += g;  // F/rho in eq. (12)
+  if (source_) source_(t, state, out);
+  ++evaluations_;
+}
+
+template <int D>
+double Simulation<D>::timeStep(TimeStepLimit& limit) const {
+  double hMin = std::numeric_limits<double>::max(), v2Max = 0, a2Max = 0, cMax = 0, nuMax = 0;
+  for (std::size_t i = 0; i < y_.size(); ++i) {
+    hMin = std::min(hMin, y_.h[i]);
+    v2Max = std::max(v2Max, y_.v[i].squaredNorm());
+    a2Max = std::max(a2Max, f_.dvdt[i].squaredNorm());
+  }
+  for (const auto& ph : scene_.phases) {
+    cMax = std::max(cMax, ph.c0);
+    if (scene_.terms.morrisViscosity) nuMax = std::max(nuMax, ph.mu / ph.rho0);
+  }
+  // Morris, Fox & Zhu (1997) eqs. (34)-(36), with the flow speed added to the sound speed.
+  const double acoustic = scene_.cflAcoustic * hMin / (cMax + std::sqrt(v2Max));
+  const double viscous = nuMax > 0 ? scene_.cflViscous * hMin * hMin / nuMax : 1e300;
+  const double accel = a2Max > 0 ? scene_.cflForce * std::sqrt(hMin / std::sqrt(a2Max)) : 1e300;
+  limit = TimeStepLimit::acoustic;
+  double dt = acoustic;
+  if (viscous < dt) dt = viscous, limit = TimeStepLimit::viscous;
+  if (accel < dt) dt = accel, limit = TimeStepLimit::acceleration;
+  return dt;
+}
+
+template <int D>
+void Simulation<D>::wrapPeriodic(Particles<D>& s) const {
+  for (int a = 0; a < D; ++a) {
+    if (bounds_.face[a][0] != FaceKind::periodic) continue;
+    const double lo = bounds_.lower[a], period = bounds_.upper[a] - lo;
+    for (auto& r : s.r) r[a] = lo + (r[a] - lo) - period * std::floor((r[a] - lo) / period);
+  }
+}
+
+template <int D>
+void Simulation<D>::reflectAtWalls(Particles<D>& s) {
+  const double tolerated = 0.5 * scene_.dx;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (int a = 0; a < D; ++a)
+      for (int side = 0; side < 2; ++side) {
+        const FaceKind k = bounds_.face[a][side];
+        if (!Boundaries<D>::isWall(k)) continue;
+        const double wall = side == 0 ? bounds_.lower[a] : bounds_.upper[a];
+        const double depth = side == 0 ? wall - s.r[i][a] : s.r[i][a] - wall;
+        if (depth <= 0 || depth > tolerated) continue;  // deeper: check() reports the failure
+        s.r[i][a] = 2 * wall - s.r[i][a];
+        s.v[i][a] = 2 * bounds_.wallVelocity[a][side][a] - s.v[i][a];
+        ++reflections_;
+      }
+}
+
+template <int D>
+std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, long step) const {
+  auto fail = [&](FailureCause cause, std::size_t i, const std::string& what) {
+    std::ostringstream m;
+    m << "step " << step << ", t = " << t << " s, particle " << i << ": " << what;
+    return Failure{cause, step, t, static_cast<int>(i), m.str()};
+  };
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!s.r[i].allFinite()) return fail(FailureCause::nan, i, "position is not finite");
+    if (!s.v[i].allFinite()) return fail(FailureCause::nan, i, "velocity is not finite");
+    if (!std::isfinite(s.rho[i])) return fail(FailureCause::nan, i, "density is not finite");
+    if (!std::isfinite(s.h[i]) || s.h[i] <= 0)
+      return fail(FailureCause::nan, i, "smoothing length is not finite and positive");
+    const Phase& ph = scene_.phases[s.phase[i]];
+    const double ratio = s.rho[i] / ph.rho0;
+    if (ratio < scene_.densityBand[0] || ratio > scene_.densityBand[1]) {
+      std::ostringstream m;
+      m << "density " << s.rho[i] << " kg/m^3 is outside the band [" << scene_.densityBand[0]
+        << ", " << scene_.densityBand[1] << "] x rho0 = " << ph.rho0 << " of phase '" << ph.name
+        << "'";
+      return fail(FailureCause::density_band, i, m.str());
+    }
+    for (int a = 0; a < D; ++a) {
+      for (int side = 0; side < 2; ++side) {
+        const FaceKind k = bounds_.face[a][side];
+        if (k == FaceKind::periodic) continue;
+        const bool out = side == 0 ? s.r[i][a] < bounds_.lower[a] : s.r[i][a] > bounds_.upper[a];
+        if (!out) continue;
+        std::ostringstream m;
+        const char* axis[3] = {"x", "y", "z"};
+        m << "position " << axis[a] << " = " << s.r[i][a] << " m is beyond the "
+          << (side == 0 ? "lower " : "upper ") << axis[a] << " face at "
+          << (side == 0 ? bounds_.lower[a] : bounds_.upper[a]) << " m";
+        if (Boundaries<D>::isWall(k))
+          return fail(FailureCause::wall_penetration, i, m.str() + " (crossed the wall)");
+        return fail(FailureCause::escaped_domain, i, m.str() + " (left the domain)");
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+template <int D>
+void Simulation<D>::prepare() {
+  if (ratesValid_) return;
+  rates(y_, t_, f_);
+  ratesValid_ = true;
+  TimeStepLimit l;
+  if (dtFloor_ == 0) dtFloor_ = scene_.dtFloor > 0 ? scene_.dtFloor : 1e-4 * timeStep(l);
+}
+
+template <int D>
+std::optional<Failure> Simulation<D>::advance(double dtMax) {
+  const std::size_t n = y_.size();
+  prepare();
+  TimeStepLimit limit;
+  const double dtStable = timeStep(limit);
+  if (!(dtStable >= dtFloor_)) {
+    std::ostringstream m;
+    m << "step " << step_ << ", t = " << t_ << " s: time step " << dtStable
+      << " s collapsed below the floor " << dtFloor_ << " s ("
+      << (limit == TimeStepLimit::acoustic  ? "acoustic"
+          : limit == TimeStepLimit::viscous ? "viscous"
+                                            : "acceleration")
+      << " limit)";
+    return Failure{FailureCause::dt_collapse, step_, t_, -1, m.str()};
+  }
+  const double dt = std::min(dtStable, dtMax);
+  // Predictor.
+  yStar_ = y_;
+  for (std::size_t i = 0; i < n; ++i) {
+    yStar_.r[i] += dt * y_.v[i];
+    yStar_.v[i] += dt * f_.dvdt[i];
+    yStar_.rho[i] += dt * f_.drhodt[i];
+    yStar_.h[i] += dt * f_.dhdt[i];
+  }
+  wrapPeriodic(yStar_);
+  rates(yStar_, t_ + dt, fStar_);
+  // Corrector: the trapezoidal rule over the two rates. Positions first: they need v*.
+  for (std::size_t i = 0; i < n; ++i) {
+    yStar_.r[i] = y_.r[i] + 0.5 * dt * (y_.v[i] + yStar_.v[i]);
+    yStar_.v[i] = y_.v[i] + 0.5 * dt * (f_.dvdt[i] + fStar_.dvdt[i]);
+    yStar_.rho[i] = y_.rho[i] + 0.5 * dt * (f_.drhodt[i] + fStar_.drhodt[i]);
+    yStar_.h[i] = y_.h[i] + 0.5 * dt * (f_.dhdt[i] + fStar_.dhdt[i]);
+  }
+  wrapPeriodic(yStar_);
+  reflectAtWalls(yStar_);
+  if (auto failure = check(yStar_, t_ + dt, step_ + 1)) return failure;
+  std::swap(y_, yStar_);
+  t_ += dt, dt_ = dt, limit_ = limit;
+  ++step_;
+  rates(y_, t_, f_);
+  for (std::size_t i = 0; i < n; ++i) y_.p[i] = set_.p[i];
+  return std::nullopt;
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace sph
