@@ -41,10 +41,15 @@ class Series {
   explicit Series(const Scene& scene) {
     for (const char* n : {"time", "dt", "step", "dt_limiter", "kinetic_energy", "max_speed",
                           "rho_min", "rho_max", "volume_error"})
-      columns.push_back({n, {}, "", ""});
-    for (const auto& ph : scene.phases) columns.push_back({"volume_error_" + ph.name, {}, "", ""});
-    for (const auto& p : scene.probes)
-      columns.push_back({"probe_" + p.name, {}, p.type, p.type == "pressure" ? "Pa" : "m"});
+      columns.push_back({n, {}, {}, {}});
+    for (const auto& ph : scene.phases) columns.push_back({"volume_error_" + ph.name, {}, {}, {}});
+    for (const auto& p : scene.probes) {
+      SeriesColumn c{"probe_" + p.name, {}, {{"type", p.type}, {"units", p.type == "pressure" ? "Pa" : "m"}}, {}};
+      if (!p.reference.empty()) c.text.push_back({"reference", p.reference});
+      if (p.scaleLength > 0) c.numbers.push_back({"scale_length", p.scaleLength});
+      if (p.scaleHeight > 0) c.numbers.push_back({"scale_height", p.scaleHeight});
+      columns.push_back(c);
+    }
     maxVariation.assign(scene.phases.size() + 1, 0.0);
   }
   void record(double t, double dt, long step, int limiter, const Diagnostics& d) {
@@ -83,6 +88,10 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("threads", std::int64_t(omp_get_max_threads()));
   file.attribute("scene_name", scene.name), file.attribute("scene_file", scene.file);
   file.attribute("dimension", std::int64_t(D));
+  double g = 0;
+  for (double c : scene.bodyAcceleration) g += c * c;
+  file.attribute("gravity", std::sqrt(g));
+  file.attribute("rho0", scene.phases[0].rho0);
   file.attribute("kernel", std::string(name(scene.kernel)));
   file.attribute("terms", join(sim.termNames()));
   file.attribute("status", std::string("running"));

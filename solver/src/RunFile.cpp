@@ -102,12 +102,17 @@ void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
       H5Pset_chunk(plist, 1, &chunk);
       d = H5Dcreate2(g, c.name.c_str(), type, space, H5P_DEFAULT, plist, H5P_DEFAULT);
       H5Pclose(plist), H5Sclose(space);
-      for (const auto& [key, value] : {std::pair{"type", c.type}, std::pair{"units", c.units}}) {
-        if (value.empty()) continue;
+      for (const auto& [key, value] : c.text) {
         hid_t t = stringType(value.size()), s = H5Screate(H5S_SCALAR);
-        hid_t a = H5Acreate2(d, key, t, s, H5P_DEFAULT, H5P_DEFAULT);
-        check(H5Awrite(a, t, value.c_str()), std::string("attribute ") + key);
+        hid_t a = H5Acreate2(d, key.c_str(), t, s, H5P_DEFAULT, H5P_DEFAULT);
+        check(H5Awrite(a, t, value.c_str()), "attribute " + key);
         H5Aclose(a), H5Sclose(s), H5Tclose(t);
+      }
+      for (const auto& [key, value] : c.numbers) {
+        hid_t s = H5Screate(H5S_SCALAR);
+        hid_t a = H5Acreate2(d, key.c_str(), H5T_NATIVE_DOUBLE, s, H5P_DEFAULT, H5P_DEFAULT);
+        check(H5Awrite(a, H5T_NATIVE_DOUBLE, &value), "attribute " + key);
+        H5Aclose(a), H5Sclose(s);
       }
     }
     if (d < 0) throw std::runtime_error("HDF5: cannot open /series/" + c.name);

@@ -315,6 +315,9 @@ void readProbes(std::vector<Table> probes, Scene& s) {
       t.fail("type", "unknown probe type '" + p.type +
                          "' (expected surge_front, column_height, pressure or water_level)");
     }
+    p.reference = t.string("reference", "");
+    p.scaleLength = t.nonNegative("scale_length", 0.0);
+    p.scaleHeight = t.nonNegative("scale_height", 0.0);
     t.rejectUnknown();
     s.probes.push_back(p);
   }

@@ -4,6 +4,7 @@
 // wrote.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sph {
@@ -11,7 +12,8 @@ namespace sph {
 struct SeriesColumn {
   std::string name;
   std::vector<double> values;  // buffered until the next flush
-  std::string type, units;     // written as attributes (probes)
+  std::vector<std::pair<std::string, std::string>> text;     // attributes, written once
+  std::vector<std::pair<std::string, double>> numbers;       // attributes, written once
 };
 
 struct SnapshotFields {

@@ -33,6 +33,10 @@ struct Probe {
   std::string name, type;  // surge_front, column_height, pressure, water_level
   std::vector<double> position;  // pressure: the point
   double x = 0.0;                // water_level: gauge position; column_height: band 0..x from the lower wall
+  // For the report (reports/README.md): reference data keys and the scales of their nondimensional
+  // form, written as attributes of /series/probe_<name>. Zero or empty: not given.
+  std::string reference;
+  double scaleLength = 0.0, scaleHeight = 0.0;
 };
 
 struct Scene {
