@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The main job: installs what is missing, builds, runs the verification and validation tiers and
+# writes the V&V report to reports/out/ (index.html, junit.xml, summary.json).
+#   scripts/vv-report.sh            nightly tier (quick + nightly tests, then the report)
+#   scripts/vv-report.sh --quick    the CI tier only (a couple of minutes)
+# Exits non-zero when a test or a report criterion fails, after writing the report.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+tier="quick|nightly"
+report_flags=()
+if [ "${1:-}" = "--quick" ]; then
+  tier="quick"
+  report_flags+=(--quick)
+fi
+scripts/install-deps.sh || exit 1
+scripts/build.sh || exit 1
+build=build/release
+rm -rf "$build/runs" "$build/results" "$build/stability"
+start=$(date +%s)
+ctest --test-dir "$build" -L "$tier" --output-on-failure -j2 --output-junit ctest-junit.xml
+tests=$?
+echo "tests took $(( $(date +%s) - start )) s"
+extra=()
+[ -d "$build/perf" ] && extra+=(--perf "$build/perf")
+[ -d "$build/stability" ] && extra+=(--stability "$build/stability")
+/usr/bin/python3 reports/vv_report.py --runs "$build/runs" --results "$build/results" \
+  --out reports/out "${report_flags[@]}" "${extra[@]}"
+report=$?
+echo "report: reports/out/index.html (tests exit $tests, report exit $report)"
+[ $tests -eq 0 ] && [ $report -eq 0 ]
