@@ -230,6 +230,9 @@ def stability(sweep: dict, out: Path, index: int, quick: bool = False):
             ax.scatter([p["x"] for p in pts], [p["y"] for p in pts], c=color, marker=marker, s=40, label=outcome)
     ax.set_xlabel(sweep.get("x_label", "x"))
     ax.set_ylabel(sweep.get("y_label", "y"))
+    ticks = sweep.get("y_ticks")  # categorical axes (e.g. the kernel)
+    if ticks:
+        ax.set_yticks(ticks["values"], ticks["labels"])
     ax.set_title(str(sweep.get("sweep", "stability sweep")), fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)

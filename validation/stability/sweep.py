@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+"""Stability sweeps (issue 8): run scene variants across a parameter and classify each run.
+
+Outcome of a run (reports/SCHEMA.md run-file attributes):
+  unstable    the solver stopped it (status "unstable"; its failure_cause is kept);
+  inaccurate  it ran to the end but broke the case's figure of merit;
+  stable      otherwise.
+Figures of merit: dam break, volume variation above the paper's 0.3 % (Lobovsky & Kren, section 3);
+tank at rest, final max|u| above 0.05 sqrt(gH) (our threshold: a tank at rest whose spurious currents
+reach 5 % of the gravity-wave speed is not at rest; the packing paper reports ~0.1 sqrt(gH) at
+t sqrt(g/H) = 10 from a Cartesian start near sloping walls, so it separates that level from rest).
+
+Usage: sweep.py --sph BIN --out DIR [--sweep NAME ...] [--jobs 2]
+Writes DIR/<sweep>.json in the report's stability format and prints a table.
+"""
+import argparse
+import concurrent.futures
+import json
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import h5py
+
+HERE = Path(__file__).resolve().parent
+G, H = 9.81, 0.25
+KERNELS = ["quadratic", "cubic_spline", "wendland_c2"]
+# The paper's dam break: c0 = 24.4 m/s, beta = 1, h = 1.33 dx, CFL 0.25 (Morris et al. 1997).
+BASE = dict(c0=24.4, beta=1.0, variable_h="true", kernel="quadratic", dx=0.02, h_over_dx=1.33,
+            cfl=0.25, cfl_force=0.25, end_time=0.8)
+
+
+def sweeps():
+    """name -> (template, x label, y label, list of (x, y, parameters)), y_ticks."""
+    out = {}
+    cfls = [0.1, 0.25, 0.4, 0.6, 0.8, 1.0, 1.3, 1.6]
+    for case in ("dam_break", "hydrostatic_tank"):
+        pts = [(c, k, dict(cfl=c, kernel=kern, end_time=0.8 if case == "dam_break" else 1.0))
+               for c in cfls for k, kern in enumerate(KERNELS)]
+        out[f"cfl_acoustic_{case}"] = (case, "acoustic CFL factor (Morris 1997: 0.25)", "kernel", pts, KERNELS)
+    betas = [0.0, 0.1, 0.25, 0.5, 1.0, 1.5, 2.0]
+    out["beta_dam_break"] = ("dam_break", "artificial viscosity beta (paper: 1)", "kernel",
+                             [(b, k, dict(beta=b, kernel=kern)) for b in betas for k, kern in enumerate(KERNELS)],
+                             KERNELS)
+    ratios = [1.0, 1.2, 1.33, 1.5, 1.75, 2.0]
+    out["h_over_dx_hydrostatic_tank"] = (
+        "hydrostatic_tank", "h/dx", "kernel",
+        [(r, k, dict(h_over_dx=r, kernel=kern, end_time=1.0)) for r in ratios
+         for k, kern in enumerate(["quadratic", "wendland_c2"])], ["quadratic", "wendland_c2"])
+    vmax = math.sqrt(2 * G * H)  # free-fall speed over the column height
+    mults = [3, 5, 7, 10, 14, 20]
+    out["mach_dam_break"] = ("dam_break", "c0 / sqrt(2 g H)", "max volume variation [%]",
+                             [(m, None, dict(c0=round(m * vmax, 4))) for m in mults], None)
+    out["variable_h_dam_break"] = ("dam_break", "variable h (0 off, 1 on)", "kernel",
+                                   [(v, k, dict(variable_h="true" if v else "false", kernel=kern))
+                                    for v in (0, 1) for k, kern in enumerate(KERNELS)], KERNELS)
+    return out
+
+
+def run_point(sph, template, params, workdir):
+    p = dict(BASE, **params)
+    name = template + "_" + "_".join(f"{k}{v}" for k, v in sorted(params.items()))
+    p["name"] = name
+    scene = Path(workdir) / f"{name}.toml"
+    scene.write_text((HERE / f"{template}.toml.in").read_text().format(**p))
+    proc = subprocess.run([sph, "run", str(scene), "--out", str(workdir), "--threads", "1", "--quiet"],
+                          capture_output=True, text=True, timeout=600)
+    h5 = Path(workdir) / f"{name}.h5"
+    if proc.returncode == 2 or not h5.exists():
+        return dict(outcome="unstable", cause="rejected", message=proc.stderr.strip())
+    with h5py.File(h5, "r") as f:
+        status = f.attrs["status"]
+        status = status.decode() if isinstance(status, bytes) else str(status)
+        cause = f.attrs.get("failure_cause", b"")
+        cause = cause.decode() if isinstance(cause, bytes) else str(cause)
+        m = f["metrics"].attrs
+        res = dict(wall_time=float(m["wall_time_s"]), steps=int(m["steps"]),
+                   volume_variation=float(m["max_volume_variation"]),
+                   wall_reflections=int(m.get("wall_reflections", 0)), end_time=float(m["end_time"]))
+        speed = f["series/max_speed"][:]
+        res["final_max_speed"] = float(speed[-1]) if len(speed) else float("nan")
+    if status != "stable":
+        res.update(outcome="unstable", cause=cause)
+    elif template == "dam_break" and res["volume_variation"] > 0.003:  # paper: < 0.3 %
+        res.update(outcome="inaccurate", cause="volume variation above 0.3 %")
+    elif template == "hydrostatic_tank" and res["final_max_speed"] > 0.05 * math.sqrt(G * H):
+        res.update(outcome="inaccurate", cause="spurious currents above 0.05 sqrt(gH)")
+    else:
+        res.update(outcome="stable", cause="")
+    return res
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--sph", required=True)
+    ap.add_argument("--out", required=True, type=Path)
+    ap.add_argument("--sweep", nargs="*", help="sweeps to run (default: all)")
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+    all_sweeps = sweeps()
+    names = args.sweep or list(all_sweeps)
+    args.out.mkdir(parents=True, exist_ok=True)
+    for name in names:
+        template, xl, yl, pts, yticks = all_sweeps[name]
+        with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+            results = list(pool.map(lambda pt: run_point(args.sph, template, pt[2], work), pts))
+        points = []
+        for (x, y, params), res in zip(pts, results):
+            if y is None:  # the Mach sweep plots the volume variation itself
+                y = 100 * res.get("volume_variation", float("nan"))
+            points.append(dict(x=x, y=y, params=params, **res))
+        doc = dict(sweep=name, case=template, x_label=xl, y_label=yl, points=points)
+        if yticks:
+            doc["y_ticks"] = dict(values=list(range(len(yticks))), labels=yticks)
+        (args.out / f"{name}.json").write_text(json.dumps(doc, indent=1))
+        print(f"{name}:")
+        for p in points:
+            print(f"  x={p['x']:<6} y={p['y']!s:<8} {p['outcome']:<10} {p.get('cause', ''):<22} "
+                  f"vol {100 * p.get('volume_variation', float('nan')):.3f} %  wall {p.get('wall_time', 0):.2f} s "
+                  f"refl {p.get('wall_reflections', '-')}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
