@@ -12,7 +12,7 @@ if [ "${1:-}" = "--quick" ]; then
   tier="quick"
   report_flags+=(--quick)
 fi
-scripts/install-deps.sh || exit 1
+if [ "$tier" = "quick" ]; then scripts/install-deps.sh || exit 1; else scripts/install-deps.sh --report || exit 1; fi
 scripts/build.sh || exit 1
 build=build/release
 rm -rf "$build/runs" "$build/results" "$build/stability"
@@ -26,5 +26,13 @@ extra=()
 /usr/bin/python3 reports/vv_report.py --runs "$build/runs" --results "$build/results" \
   --out reports/out "${report_flags[@]}" "${extra[@]}"
 report=$?
+if [ "$tier" != "quick" ]; then
+  # The report as a reader sees it: rendered by headless Chromium, images checked, and a screenshot.
+  REPORT_DIR=reports/out /usr/bin/python3 -m pytest -q -p no:cacheprovider reports/browser || report=1
+  chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
+    --disable-background-networking --disable-component-update --disable-sync --hide-scrollbars \
+    --user-data-dir="$(mktemp -d)" --screenshot="$PWD/reports/out/screenshot.png" \
+    --window-size=1280,1800 "file://$PWD/reports/out/index.html" >/dev/null 2>&1
+fi
 echo "report: reports/out/index.html (tests exit $tests, report exit $report)"
 [ $tests -eq 0 ] && [ $report -eq 0 ]
