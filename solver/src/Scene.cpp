@@ -53,10 +53,16 @@ class Table {
       fail(key, "missing value (a number)");
     }
     if (auto v = n->value<double>()) {
-      if (!std::isfinite(*v)) fail(key, "must be a finite number");
+      if (!std::isfinite(*v)) fail(key, "must be a finite number, got " + fmt(*v));
       return *v;
     }
     fail(key, std::string("wrong type: expected a number, got ") + typeName(*n));
+  }
+  // A whole number (a TOML integer, or a float without a fractional part).
+  long integer(const std::string& key, std::optional<long> fallback = std::nullopt) {
+    const double v = number(key, fallback ? std::optional<double>(*fallback) : std::nullopt);
+    if (v != std::floor(v) || std::abs(v) > 1e9) fail(key, "must be a whole number, got " + fmt(v));
+    return static_cast<long>(v);
   }
   double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
     const double v = number(key, fallback);
@@ -101,7 +107,9 @@ class Table {
     std::vector<double> out;
     for (const auto& e : *a) {
       auto v = e.value<double>();
-      if (!v || !std::isfinite(*v)) fail(key, "every entry must be a finite number");
+      const std::string entry = "entry " + std::to_string(out.size());
+      if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
+      if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
       out.push_back(*v);
     }
     return out;
@@ -221,6 +229,12 @@ int phaseIndex(Table& t, const Scene& s) {
   t.fail("phase", "no [[phase]] named '" + name + "'");
 }
 
+std::string fmtRange(double lo, double hi) {
+  std::ostringstream m;
+  m << "[" << lo << ", " << hi << "]";
+  return m.str();
+}
+
 // Bounding box of a block, for the inside-the-walls and overlap checks.
 void bounds(const FluidBlock& b, int D, std::vector<double>& lo, std::vector<double>& hi) {
   lo.resize(D), hi.resize(D);
@@ -281,14 +295,22 @@ void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
     std::vector<double> lo, hi;
     bounds(b, D, lo, hi);
     b.surface = t.number("surface", hi[D - 1]);
-    for (int a = 0; a < D; ++a)
-      if (lo[a] < s.lower[a] - 1e-12 || hi[a] > s.upper[a] + 1e-12)
-        t.fail(shape == "circle" ? "center" : "lower",
-               std::string("the fluid block lies outside the domain along ") + axisName[a]);
+    for (int a = 0; a < D; ++a) {
+      const bool below = lo[a] < s.lower[a] - 1e-12;
+      const bool above = hi[a] > s.upper[a] + 1e-12;
+      if (!below && !above) continue;
+      // Name the key that puts the block out: its centre, or the corner on the offending side.
+      const char* key = shape == "circle" ? "center" : below ? "lower" : "upper";
+      t.fail(key, std::string("the fluid block lies outside the domain along ") + axisName[a] +
+                      " (block " + fmtRange(lo[a], hi[a]) + ", domain " +
+                      fmtRange(s.lower[a], s.upper[a]) + ")");
+    }
     t.rejectUnknown();
     for (std::size_t k = 0; k < s.fluids.size(); ++k)
       if (overlap(b, s.fluids[k], D))
-        t.fail("shape", "this block overlaps fluid block " + std::to_string(k));
+        t.fail(b.shape == FluidBlock::Shape::circle ? "center" : "lower",
+               "this block overlaps fluid block " + std::to_string(k) + " (fluid[" +
+                   std::to_string(k) + "])");
     s.fluids.push_back(b);
   }
 }
@@ -369,8 +391,10 @@ Scene parseScene(const std::string& text, const std::string& file) {
   Table top(root, "", s.file);
   s.name = top.string("name");
   top.string("description", "");
-  s.dimension = static_cast<int>(top.number("dimension"));
-  if (s.dimension < 1 || s.dimension > 3) top.fail("dimension", "must be 1, 2 or 3");
+  const double dimension = top.number("dimension");  // 2.5 must not pass as 2
+  if (dimension != 1 && dimension != 2 && dimension != 3)
+    top.fail("dimension", "must be 1, 2 or 3, got " + std::to_string(dimension));
+  s.dimension = static_cast<int>(dimension);
   const int D = s.dimension;
   readDomain(top.sub("domain"), s);
   readPhases(top.array("phase"), s, top);
@@ -405,7 +429,9 @@ Scene parseScene(const std::string& text, const std::string& file) {
 
   Table output = top.sub("output");
   s.snapshotInterval = output.nonNegative("snapshot_interval", 0.0);
-  s.seriesEvery = static_cast<int>(output.positive("series_every", 1.0));
+  const long seriesEvery = output.integer("series_every", 1);
+  if (seriesEvery < 1) output.fail("series_every", "must be a positive whole number");
+  s.seriesEvery = static_cast<int>(seriesEvery);
   output.rejectUnknown();
   readProbes(top.array("probe"), s);
   top.rejectUnknown();

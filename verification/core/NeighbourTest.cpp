@@ -1,0 +1,149 @@
+// Issue 2, part 2: neighbour search. The cell list (CellList.hpp) against an O(N^2) search, with a
+// variable smoothing length, and periodic images (buildInteractionSet) against the
+// minimum-image convention.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "sph/CellList.hpp"
+#include "sph/EquationOfState.hpp"
+#include "sph/InteractionSet.hpp"
+
+namespace {
+
+using Pair = std::pair<int, int>;
+
+// Pair criterion of the force loop: r_ij < 2 h_ij, h_ij = (h_i + h_j) / 2 (Lobovsky & Kren eq. 5,
+// support 2h, with the pair's mean smoothing length).
+template <int D>
+bool within(const sph::Vec<D>& a, const sph::Vec<D>& b, double hi, double hj) {
+  const double reach = hi + hj;  // 2 h_ij
+  return (a - b).squaredNorm() < reach * reach;
+}
+
+template <int D>
+void cellListAgainstBruteForce(unsigned seed, bool clustered) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = 600;
+  std::vector<sph::Vec<D>> x(n);
+  std::vector<double> h(n);
+  const double h0 = D == 2 ? 0.03 : 0.08;  // about 20 (2-D) and 10 (3-D) neighbours each
+  for (int i = 0; i < n; ++i) {
+    for (int a = 0; a < D; ++a) x[i][a] = u(rng);
+    h[i] = h0 * (0.5 + u(rng));  // h varies by a factor 3 across particles
+  }
+  // A few far-away points force the list onto coarser cells (its O(N) guard).
+  if (clustered)
+    for (int i = 0; i < 3; ++i) x[i] *= 1e4;
+  const double hMax = *std::max_element(h.begin(), h.end());
+  sph::CellList<D> cells;
+  cells.build(x, 2.0 * hMax);
+  const auto& order = cells.order();
+  std::multiset<Pair> found;
+  for (std::int64_t c = 0; c < cells.cells(); ++c)
+    for (int k = cells.cellBegin(c); k < cells.cellEnd(c); ++k) {
+      const int i = order[k];
+      cells.forEachAdjacentRange(c, [&](int begin, int end) {
+        for (int l = begin; l < end; ++l) {
+          const int j = order[l];
+          if (j != i && within<D>(x[i], x[j], h[i], h[j])) found.insert({i, j});
+        }
+      });
+    }
+  std::multiset<Pair> expected;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (j != i && within<D>(x[i], x[j], h[i], h[j])) expected.insert({i, j});
+  ASSERT_GT(expected.size(), static_cast<std::size_t>(5 * n)) << "too few pairs to test anything";
+  EXPECT_EQ(found, expected);  // every pair once (a multiset also catches duplicates)
+}
+
+TEST(Neighbours, CellListMatchesBruteForce2D) {
+  cellListAgainstBruteForce<2>(1, false);
+  cellListAgainstBruteForce<2>(2, true);
+}
+
+TEST(Neighbours, CellListMatchesBruteForce3D) {
+  cellListAgainstBruteForce<3>(3, false);
+  cellListAgainstBruteForce<3>(4, true);
+}
+
+// Periodic on every axis: the interaction set's fluid entries and their images, searched by
+// brute force, must give every pair whose minimum-image distance is below 2 h_ij exactly once
+// (as (i, source of j)) and no other pair.
+template <int D>
+void periodicImages(unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = 400;
+  sph::Boundaries<D> bounds;
+  for (int a = 0; a < D; ++a) {
+    bounds.lower[a] = -0.3 + 0.1 * a;
+    bounds.upper[a] = bounds.lower[a] + 0.5 + 0.1 * a;
+    bounds.face[a] = {sph::FaceKind::periodic, sph::FaceKind::periodic};
+  }
+  sph::Particles<D> fluid;
+  fluid.resize(n);
+  const double h0 = D == 2 ? 0.02 : 0.06;
+  for (int i = 0; i < n; ++i) {
+    for (int a = 0; a < D; ++a)
+      fluid.r[i][a] = bounds.lower[a] + u(rng) * (bounds.upper[a] - bounds.lower[a]);
+    fluid.v[i].setZero();
+    fluid.rho[i] = 1000.0, fluid.m[i] = 1.0, fluid.phase[i] = 0;
+    fluid.h[i] = h0 * (0.5 + u(rng));
+  }
+  const double hMax = *std::max_element(fluid.h.begin(), fluid.h.end());
+  // The period (>= 0.5) exceeds twice the reach 2 hMax (<= 0.18), so the minimum image is the
+  // only image within reach.
+  std::vector<sph::Phase> phases{sph::Phase{}};
+  sph::InteractionSet<D> set;
+  sph::buildInteractionSet<D>(fluid, phases, bounds, 2.0 * hMax, sph::Vec<D>::Zero(), set);
+  ASSERT_EQ(set.nFluid, static_cast<std::size_t>(n));
+  ASSERT_GT(set.size(), set.nFluid) << "no periodic images were made";
+
+  std::multiset<Pair> found;
+  for (int i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < set.size(); ++j)
+      if (static_cast<int>(j) != i && within<D>(set.x[i], set.x[j], set.h[i], set.h[j]))
+        found.insert({i, set.source[j]});
+  std::multiset<Pair> expected;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (j == i) continue;
+      sph::Vec<D> d = fluid.r[i] - fluid.r[j];
+      for (int a = 0; a < D; ++a) {
+        const double period = bounds.upper[a] - bounds.lower[a];
+        d[a] -= period * std::round(d[a] / period);  // minimum image
+      }
+      if (within<D>(d, sph::Vec<D>::Zero(), fluid.h[i], fluid.h[j])) expected.insert({i, j});
+    }
+  ASSERT_GT(expected.size(), static_cast<std::size_t>(5 * n));
+  EXPECT_EQ(found, expected);
+  // Each image is a copy of its source shifted by whole periods.
+  for (std::size_t j = set.nFluid; j < set.size(); ++j) {
+    const int s = set.source[j];
+    for (int a = 0; a < D; ++a) {
+      const double period = bounds.upper[a] - bounds.lower[a];
+      const double shift = (set.x[j][a] - fluid.r[s][a]) / period;
+      EXPECT_NEAR(shift, std::round(shift), 1e-12);
+    }
+    EXPECT_EQ(set.rho[j], fluid.rho[s]);
+    EXPECT_EQ(set.h[j], fluid.h[s]);
+  }
+}
+
+TEST(Neighbours, PeriodicImages2D) {
+  periodicImages<2>(5);
+}
+TEST(Neighbours, PeriodicImages3D) {
+  periodicImages<3>(6);
+}
+
+}  // namespace

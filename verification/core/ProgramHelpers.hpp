@@ -1,0 +1,35 @@
+#pragma once
+// Running the `sph` program from a test and reading the run file it writes (HDF5 C API).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sph::core_tests {
+
+struct ProgramResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs `sph <arguments>` (SPH_EXE) through the shell and returns its exit code and output.
+ProgramResult runSph(const std::string& arguments);
+
+// A fresh, empty directory for the running test: CORE_OUT/<Suite>.<Test>.
+std::string freshOutputDirectory();
+
+std::string scenePath(const std::string& name);  // CORE_SCENES/<name>
+std::string readText(const std::string& path);
+void writeText(const std::string& path, const std::string& text);
+
+// HDF5 reading; each returns nullopt where the object does not exist.
+std::optional<std::string> stringAttribute(const std::string& file, const std::string& object,
+                                           const std::string& name);
+std::optional<std::int64_t> integerAttribute(const std::string& file, const std::string& object,
+                                             const std::string& name);
+std::optional<std::vector<std::uint64_t>> datasetShape(const std::string& file,
+                                                       const std::string& dataset);
+std::vector<double> readDoubles(const std::string& file, const std::string& dataset);
+std::vector<std::string> groupMembers(const std::string& file, const std::string& group);
+
+}  // namespace sph::core_tests
