@@ -2,6 +2,11 @@
 // Cell-linked list (Hockney & Eastwood): points binned into cubic cells of side `cellSize` over
 // their bounding box and counting-sorted by cell, so that all neighbours of a point within
 // cellSize lie in the 3^D cells around it. O(N) to build and to query.
+//
+// Cells are numbered with axis 0 fastest, so the three cells ix-1, ix, ix+1 of one row along axis 0
+// are consecutive and their points form one contiguous range of the sorted order: a point's
+// neighbours lie in 3^(D-1) such ranges (forEachAdjacentRow), which a pair loop can sweep without
+// per-cell bookkeeping.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,19 +21,27 @@ template <int D>
 class CellList {
  public:
   void build(const std::vector<Vec<D>>& x, double cellSize) {
-    const std::size_t n = x.size();
-    lo_ = Vec<D>::Constant(0.0);
-    Vec<D> hi = Vec<D>::Constant(0.0);
-    if (n > 0) {
-      lo_ = x[0], hi = x[0];
-      for (const auto& p : x) lo_ = lo_.cwiseMin(p), hi = hi.cwiseMax(p);
-    }
+    build(
+        x.size(), [&](std::size_t i, int a) { return x[i][a]; }, cellSize);
+  }
+
+  // The same, for points given by an accessor pos(i, axis); the arrays are reused between builds
+  // (no allocation once they have grown to the largest n seen).
+  template <class Pos>
+  void build(std::size_t n, Pos&& pos, double cellSize) {
+    std::array<double, D> lo{}, hi{};
+    if (n > 0)
+      for (int a = 0; a < D; ++a) lo[a] = hi[a] = pos(0, a);
+    for (std::size_t i = 1; i < n; ++i)
+      for (int a = 0; a < D; ++a)
+        lo[a] = std::min(lo[a], pos(i, a)), hi[a] = std::max(hi[a], pos(i, a));
+    for (int a = 0; a < D; ++a) lo_[a] = lo[a];
     // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct.
     size_ = cellSize;
     for (;;) {
       std::int64_t total = 1;
       for (int a = 0; a < D; ++a) {
-        dims_[a] = static_cast<int>(std::floor((hi[a] - lo_[a]) / size_)) + 1;
+        dims_[a] = static_cast<int>(std::floor((hi[a] - lo[a]) / size_)) + 1;
         total *= dims_[a];
       }
       if (total <= static_cast<std::int64_t>(4 * n + 64)) break;
@@ -39,20 +52,36 @@ class CellList {
     start_.assign(total + 1, 0);
     cellOf_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      cellOf_[i] = cellIndex(x[i]);
-      ++start_[cellOf_[i] + 1];
+      std::int64_t idx = 0, stride = 1;
+      for (int a = 0; a < D; ++a) {
+        int k = static_cast<int>((pos(i, a) - lo_[a]) / size_);
+        k = std::clamp(k, 0, dims_[a] - 1);
+        idx += k * stride;
+        stride *= dims_[a];
+      }
+      cellOf_[i] = idx;
+      ++start_[idx + 1];
     }
     for (std::int64_t c = 0; c < total; ++c) start_[c + 1] += start_[c];
     order_.resize(n);
-    std::vector<int> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) order_[fill[cellOf_[i]]++] = static_cast<int>(i);
+    sortedCell_.resize(n);
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) {
+      const int k = fill_[cellOf_[i]]++;
+      order_[k] = static_cast<int>(i);
+      sortedCell_[k] = cellOf_[i];
+    }
   }
 
   // order()[k] is the point at position k of the cell-sorted sequence.
   const std::vector<int>& order() const { return order_; }
+  // The cell of the point at sorted position k.
+  std::int64_t sortedCell(int k) const { return sortedCell_[k]; }
   std::int64_t cells() const { return static_cast<std::int64_t>(start_.size()) - 1; }
   int cellBegin(std::int64_t c) const { return start_[c]; }
   int cellEnd(std::int64_t c) const { return start_[c + 1]; }
+  // The cell side actually used (cellSize, doubled as often as the O(N) guard needed).
+  double cellSize() const { return size_; }
 
   // Calls f(begin, end) for the sorted range of each cell around cell `c` (itself included).
   template <class F>
@@ -78,23 +107,49 @@ class CellList {
     }
   }
 
- private:
-  std::int64_t cellIndex(const Vec<D>& p) const {
-    std::int64_t idx = 0, stride = 1;
-    for (int a = 0; a < D; ++a) {
-      int k = static_cast<int>((p[a] - lo_[a]) / size_);
-      k = std::clamp(k, 0, dims_[a] - 1);
-      idx += k * stride;
-      stride *= dims_[a];
+  // Calls f(begin, end) for each of the 3^(D-1) rows of cells around cell `c`: the sorted range of
+  // the cells ix-1 .. ix+1 (clipped to the grid) at each offset -1, 0, 1 of the other axes. The
+  // ranges come in a fixed order and together hold the same points as forEachAdjacentRange's.
+  template <class F>
+  void forEachAdjacentRow(std::int64_t c, F&& f) const {
+    const int ix = static_cast<int>(c % dims_[0]);
+    const std::int64_t rowStart = c - ix;  // cell (0, iy, iz)
+    const int first = ix > 0 ? -1 : 0, last = ix + 1 < dims_[0] ? 1 : 0;
+    if constexpr (D == 1) {
+      f(start_[c + first], start_[c + last + 1]);
+    } else {
+      std::array<int, D> ic{};
+      std::int64_t rest = c / dims_[0];
+      for (int a = 1; a < D; ++a) ic[a] = static_cast<int>(rest % dims_[a]), rest /= dims_[a];
+      std::array<int, D> off;
+      off.fill(-1);
+      for (;;) {
+        std::int64_t shift = 0, stride = dims_[0];
+        bool inside = true;
+        for (int a = 1; a < D; ++a) {
+          const int k = ic[a] + off[a];
+          if (k < 0 || k >= dims_[a]) inside = false;
+          shift += off[a] * stride;
+          stride *= dims_[a];
+        }
+        if (inside) {
+          const std::int64_t row = rowStart + shift;
+          const int b = start_[row + ix + first], e = start_[row + ix + last + 1];
+          if (b != e) f(b, e);
+        }
+        int a = 1;
+        while (a < D && ++off[a] > 1) off[a++] = -1;
+        if (a == D) break;
+      }
     }
-    return idx;
   }
 
-  Vec<D> lo_;
+ private:
+  Vec<D> lo_ = Vec<D>::Zero();
   double size_ = 1.0;
   std::array<int, D> dims_{};
-  std::vector<int> start_, order_;
-  std::vector<std::int64_t> cellOf_;
+  std::vector<int> start_, order_, fill_;
+  std::vector<std::int64_t> cellOf_, sortedCell_;
 };
 
 }  // namespace sph

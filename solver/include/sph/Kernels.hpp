@@ -1,7 +1,7 @@
 #pragma once
-// Smoothing kernels W(r, h) with compact support 2h, normalised so that the integral over R^D is one
-// (Lobovsky & Kren eq. 4). Each kernel is a small type with static members so that the pair loop
-// inlines it; the scene picks one by name (KernelKind).
+// Smoothing kernels W(r, h) with compact support 2h, normalised so that the integral over R^D is
+// one (Lobovsky & Kren eq. 4). Each kernel is a small type with static members so that the pair
+// loop inlines it; the scene picks one by name (KernelKind).
 #include <cmath>
 #include <numbers>
 #include <string_view>
@@ -11,8 +11,10 @@ namespace sph {
 // h^n for a small compile-time n, without std::pow's cost in the pair loop.
 template <int n>
 constexpr double ipow(double h) {
-  if constexpr (n == 0) return 1.0;
-  else return h * ipow<n - 1>(h);
+  if constexpr (n == 0)
+    return 1.0;
+  else
+    return h * ipow<n - 1>(h);
 }
 
 enum class KernelKind { quadratic, cubic_spline, wendland_c2 };
@@ -42,6 +44,13 @@ struct QuadraticKernel {
     if (q >= 2.0) return 0.0;
     return norm<D>() / ipow<D + 1>(h) * (0.375 * q - 0.75);
   }
+  // (1/r) dW/dr from r^2 and 1/h, for the pair loop: valid for 0 < r < 2h only (the loop has
+  // already dropped the other pairs), and branch-free so that the loop vectorises.
+  // (0.375 q - 0.75) / r = 0.375 / h - 0.75 / r.
+  template <int D>
+  static double gradOverR(double r2, double hInv) {
+    return norm<D>() * ipow<D + 1>(hInv) * (0.375 * hInv - 0.75 / std::sqrt(r2));
+  }
 };
 
 // Monaghan & Lattanzio (1985) cubic B-spline, support 2h.
@@ -58,7 +67,8 @@ struct CubicSplineKernel {
   static double W(double r, double h) {
     const double q = r / h;
     if (q >= 2.0) return 0.0;
-    const double f = q < 1.0 ? 1.0 - 1.5 * q * q + 0.75 * q * q * q : 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
+    const double f =
+        q < 1.0 ? 1.0 - 1.5 * q * q + 0.75 * q * q * q : 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
     return norm<D>() / ipow<D>(h) * f;
   }
   template <int D>
@@ -67,6 +77,13 @@ struct CubicSplineKernel {
     if (q >= 2.0) return 0.0;
     const double df = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
     return norm<D>() / ipow<D + 1>(h) * df;
+  }
+  // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR); for q < 1, df/q = -3 + 2.25 q.
+  template <int D>
+  static double gradOverR(double r2, double hInv) {
+    const double r = std::sqrt(r2), q = r * hInv, s = 2.0 - q;
+    const double dfOverQ = q < 1.0 ? -3.0 + 2.25 * q : -0.75 * s * s / q;
+    return norm<D>() * ipow<D + 2>(hInv) * dfOverQ;
   }
 };
 
@@ -97,15 +114,26 @@ struct WendlandC2Kernel {
     if constexpr (D == 1) return norm<D>() / (h * h) * (-3.0 * q * s * s);
     return norm<D>() / ipow<D + 1>(h) * (-5.0 * q * s * s * s);
   }
+  // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR): the factor q cancels against
+  // 1/r = 1/(q h), so no division is left.
+  template <int D>
+  static double gradOverR(double r2, double hInv) {
+    const double s = 1.0 - 0.5 * std::sqrt(r2) * hInv;
+    if constexpr (D == 1) return norm<D>() * hInv * hInv * hInv * (-3.0 * s * s);
+    return norm<D>() * ipow<D + 2>(hInv) * (-5.0 * s * s * s);
+  }
 };
 
 // Calls f(Kernel{}) with the kernel type that `kind` names.
 template <class F>
 decltype(auto) withKernel(KernelKind kind, F&& f) {
   switch (kind) {
-    case KernelKind::quadratic: return f(QuadraticKernel{});
-    case KernelKind::cubic_spline: return f(CubicSplineKernel{});
-    default: return f(WendlandC2Kernel{});
+    case KernelKind::quadratic:
+      return f(QuadraticKernel{});
+    case KernelKind::cubic_spline:
+      return f(CubicSplineKernel{});
+    default:
+      return f(WendlandC2Kernel{});
   }
 }
 

@@ -1,0 +1,99 @@
+// Issue 7 micro-benchmarks (Google Benchmark): the neighbour search, each term combination of the
+// menu alone, and the whole force evaluation from 1e3 to 1e6 particles at 1 and 2 threads, on the
+// 2-D perturbed-lattice block of Workload.hpp. items_per_second is fluid particles evaluated per
+// second; the counter ns_per_particle is its inverse.
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <map>
+#include <memory>
+
+#include "Workload.hpp"
+
+namespace {
+
+using sph::perf::Block2D;
+
+// Blocks are built once per size and shared by the benchmarks (building 1e6 takes a while).
+Block2D& block(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<Block2D>> cache;
+  auto& b = cache[n];
+  if (!b) b = std::make_unique<Block2D>(sph::perf::makeBlock(n));
+  return *b;
+}
+
+void setCounters(benchmark::State& state, std::size_t particles) {
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * particles));
+  state.counters["ns_per_particle"] = benchmark::Counter(
+      1e-9 * static_cast<double>(particles),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+// Neighbour search: the cell list build over fluid and ghosts.
+void BM_CellListBuild(benchmark::State& state) {
+  Block2D& b = block(static_cast<std::size_t>(state.range(0)));
+  sph::CellList<2> cells;
+  for (auto _ : state) {
+    cells.build(b.set.x, 2.0 * b.hMax);
+    benchmark::DoNotOptimize(cells.order().data());
+  }
+  setCounters(state, b.set.size());
+}
+BENCHMARK(BM_CellListBuild)
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMicrosecond);
+
+// One term combination alone (quadratic kernel, 1 thread, 2e4 particles): range(0) is
+// artificial viscosity + 2 morris viscosity + 4 variable h, the menu index of ForceEvaluation.cpp.
+void BM_Terms(benchmark::State& state) {
+  const int t = static_cast<int>(state.range(0));
+  sph::TermSwitches terms{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0};
+  Block2D& b = block(20000);
+  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, terms, 1.0);
+  omp_set_num_threads(1);
+  for (auto _ : state) {
+    force(b.set, b.out);
+    benchmark::DoNotOptimize(b.out.drhodt.data());
+  }
+  std::string label;
+  for (const auto& n : force.termNames()) label += (label.empty() ? "" : "+") + n;
+  state.SetLabel(label);
+  setCounters(state, b.set.nFluid);
+}
+BENCHMARK(BM_Terms)->DenseRange(0, 7)->Unit(benchmark::kMicrosecond);
+
+// Each kernel with every term (the dam break's menu entry), 1 thread, 2e4 particles.
+void BM_Kernels(benchmark::State& state) {
+  const auto kind = static_cast<sph::KernelKind>(state.range(0));
+  Block2D& b = block(20000);
+  sph::ForceEvaluation<2> force(kind, {true, true, true}, 1.0);
+  omp_set_num_threads(1);
+  for (auto _ : state) {
+    force(b.set, b.out);
+    benchmark::DoNotOptimize(b.out.drhodt.data());
+  }
+  state.SetLabel(std::string(sph::name(kind)));
+  setCounters(state, b.set.nFluid);
+}
+BENCHMARK(BM_Kernels)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+
+// The whole force evaluation (quadratic kernel, all terms): range(0) particles, range(1) threads.
+void BM_ForceEvaluation(benchmark::State& state) {
+  Block2D& b = block(static_cast<std::size_t>(state.range(0)));
+  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, {true, true, true}, 1.0);
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    force(b.set, b.out);
+    benchmark::DoNotOptimize(b.out.drhodt.data());
+  }
+  setCounters(state, b.set.nFluid);
+}
+BENCHMARK(BM_ForceEvaluation)
+    ->ArgsProduct({{1000, 10000, 100000, 1000000}, {1, 2}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

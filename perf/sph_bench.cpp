@@ -1,0 +1,380 @@
+// Issue 7 end-to-end benchmark: the dam break (validation/scenes/dam_break.toml, dx overridden)
+// at a list of resolutions and thread counts, the force evaluation's throughput from 1e3 to 1e6
+// particles, the cost of each term combination, the memory per particle near 1e6 particles, and
+// the fraction of a flop-count bound (flops per pair counted in Workload.hpp against the peak
+// double flops measured here with an FMA kernel). Prints tables and writes one JSON per chart
+// into the output directory in the report's format (reports/README.md, `--perf DIR`).
+//
+//   sph_bench --out DIR [--dx 0.01,0.005] [--threads 1,2] [--end-time T] [--sizes 1000,...]
+//             [--memory-dx 0.00035] [--scene FILE] [--skip-dam-break]
+#include <immintrin.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Workload.hpp"
+#include "sph/Scene.hpp"
+#include "sph/Simulation.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+std::vector<double> parseList(const std::string& s) {
+  std::vector<double> v;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) v.push_back(std::stod(item));
+  return v;
+}
+
+// Peak resident set size of this process [bytes] (VmHWM in /proc/self/status).
+double peakRss() {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return 1024.0 * std::stod(line.substr(6));
+  return 0.0;
+}
+
+// Peak double-precision flop rate of one core: 12 independent chains of fused multiply-adds
+// (2 flops each), enough to cover the FMA latency on two pipes. `avx2` uses 4-wide FMA (what the
+// machine can do); otherwise 2-wide SSE2 mul + add, all the project's -march=x86-64-v2 build can
+// emit.
+template <int Which>
+__attribute__((target("avx2,fma"))) double fmaChains(long iterations) {
+  if constexpr (Which == 1) {
+    __m256d acc[12];
+    const __m256d a = _mm256_set1_pd(0.999999), b = _mm256_set1_pd(1e-7);
+    for (int k = 0; k < 12; ++k) acc[k] = _mm256_set1_pd(1.0 + k);
+    for (long it = 0; it < iterations; ++it)
+      for (int k = 0; k < 12; ++k) acc[k] = _mm256_fmadd_pd(acc[k], a, b);
+    double s = 0;
+    for (int k = 0; k < 12; ++k) s += acc[k][0] + acc[k][1] + acc[k][2] + acc[k][3];
+    return s;
+  } else {
+    __m128d acc[12];
+    const __m128d a = _mm_set1_pd(0.999999), b = _mm_set1_pd(1e-7);
+    for (int k = 0; k < 12; ++k) acc[k] = _mm_set1_pd(1.0 + k);
+    for (long it = 0; it < iterations; ++it)
+      for (int k = 0; k < 12; ++k) acc[k] = _mm_add_pd(_mm_mul_pd(acc[k], a), b);
+    double s = 0;
+    for (int k = 0; k < 12; ++k) s += acc[k][0] + acc[k][1];
+    return s;
+  }
+}
+
+// Flop/s of `threads` cores running the chains at once (best of 5).
+template <int Which>
+double peakFlops(int threads) {
+  const long iterations = 20'000'000;
+  const double flopsPerIteration = Which == 1 ? 12 * 4 * 2 : 12 * 2 * 2;
+  double best = 0;
+  for (int rep = 0; rep < 5; ++rep) {
+    const auto t0 = Clock::now();
+    double sink = 0;
+#pragma omp parallel num_threads(threads) reduction(+ : sink)
+    sink += fmaChains<Which>(iterations);
+    const double dt = seconds(t0, Clock::now());
+    if (sink == 42.0) std::puts("");
+    best = std::max(best, threads * iterations * flopsPerIteration / dt);
+  }
+  return best;
+}
+
+// Seconds per call of f: the best of several batches of at least `minBatch` seconds each. The
+// minimum is the estimate least disturbed by other processes on a shared machine.
+template <class F>
+double timePerCall(F&& f, double minBatch = 0.2, int batches = 5) {
+  f();  // warm-up (and workspace growth)
+  double best = 1e300;
+  for (int b = 0; b < batches; ++b) {
+    long calls = 0;
+    const auto t0 = Clock::now();
+    double dt = 0;
+    do {
+      f();
+      ++calls;
+      dt = seconds(t0, Clock::now());
+    } while (dt < minBatch);
+    best = std::min(best, dt / calls);
+  }
+  return best;
+}
+
+struct Json {
+  std::string title, xLabel, yLabel, source;
+  std::vector<std::pair<std::string, std::pair<std::vector<double>, std::vector<double>>>> series;
+  void write(const std::filesystem::path& file) const {
+    std::ofstream out(file);
+    out.precision(10);
+    out << "{\"benchmark\": \"" << title << "\", \"x_label\": \"" << xLabel << "\", \"y_label\": \""
+        << yLabel << "\",\n \"series\": [";
+    for (std::size_t s = 0; s < series.size(); ++s) {
+      out << (s ? ",\n  " : "\n  ") << "{\"label\": \"" << series[s].first << "\", \"x\": [";
+      for (std::size_t k = 0; k < series[s].second.first.size(); ++k)
+        out << (k ? ", " : "") << series[s].second.first[k];
+      out << "], \"y\": [";
+      for (std::size_t k = 0; k < series[s].second.second.size(); ++k)
+        out << (k ? ", " : "") << series[s].second.second[k];
+      out << "]}";
+    }
+    out << "],\n \"source\": \"" << source << "\"}\n";
+  }
+};
+
+std::string withDx(std::string text, double dx, double endTime) {
+  std::ostringstream d, e;
+  d.precision(17), e.precision(17);
+  d << "dx = " << dx;
+  text = std::regex_replace(text, std::regex(R"(\ndx\s*=\s*[0-9.eE+-]+)"), "\n" + d.str());
+  if (endTime > 0) {
+    e << "end_time = " << endTime;
+    text = std::regex_replace(text, std::regex(R"(\nend_time\s*=\s*[0-9.eE+-]+)"), "\n" + e.str());
+  }
+  return text;
+}
+
+struct DamBreakResult {
+  std::size_t particles = 0;
+  long steps = 0, evaluations = 0;
+  double wall = 0, endTime = 0;
+  std::uint64_t hash = 0;
+  bool failed = false;
+};
+
+DamBreakResult runDamBreak(const std::string& sceneText, double dx, double endTime, int threads,
+                           long maxSteps = -1) {
+  omp_set_num_threads(threads);
+  const sph::Scene scene = sph::parseScene(withDx(sceneText, dx, endTime), "dam_break.toml");
+  DamBreakResult r;
+  r.endTime = scene.endTime;
+  const auto t0 = Clock::now();
+  sph::Simulation<2> sim(scene);
+  r.particles = sim.particles().size();
+  while (sim.time() < scene.endTime * (1 - 1e-12) && (maxSteps < 0 || sim.step() < maxSteps)) {
+    if (sim.advance(scene.endTime - sim.time())) {
+      r.failed = true;
+      break;
+    }
+  }
+  r.wall = seconds(t0, Clock::now());
+  r.steps = sim.step(), r.evaluations = sim.forceEvaluations();
+  // FNV-1a over the final state's bits: equal hashes for 1 and 2 threads mean identical runs.
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, 8);
+    h = (h ^ b) * 1099511628211ull;
+  };
+  const auto& p = sim.particles();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    mix(p.r[i][0]), mix(p.r[i][1]), mix(p.rho[i]), mix(p.h[i]);
+  r.hash = h;
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string outDir, scenePath = std::string(SPH_SOURCE_DIR) + "/validation/scenes/dam_break.toml";
+  std::vector<double> dxs{0.01, 0.005, 0.0025}, threadList{1, 2}, sizes{1e3, 1e4, 1e5, 1e6};
+  double endTime = 0, memoryDx = 0.00035;
+  bool damBreak = true;
+  for (int a = 1; a < argc; ++a) {
+    const std::string k = argv[a];
+    auto next = [&]() -> std::string {
+      if (a + 1 >= argc) throw std::runtime_error("missing value after " + k);
+      return argv[++a];
+    };
+    if (k == "--out")
+      outDir = next();
+    else if (k == "--dx")
+      dxs = parseList(next());
+    else if (k == "--threads")
+      threadList = parseList(next());
+    else if (k == "--sizes")
+      sizes = parseList(next());
+    else if (k == "--end-time")
+      endTime = std::stod(next());
+    else if (k == "--memory-dx")
+      memoryDx = std::stod(next());
+    else if (k == "--scene")
+      scenePath = next();
+    else if (k == "--skip-dam-break")
+      damBreak = false;
+    else {
+      std::cerr << "sph_bench: unknown option " << k << "\n";
+      return 2;
+    }
+  }
+  if (outDir.empty()) {
+    std::cerr << "usage: sph_bench --out DIR [--dx a,b] [--threads 1,2] [--sizes n,...] "
+                 "[--end-time T] [--memory-dx dx] [--scene FILE] [--skip-dam-break]\n";
+    return 2;
+  }
+  std::filesystem::create_directories(outDir);
+  std::ifstream sceneIn(scenePath);
+  std::stringstream sceneBuf;
+  sceneBuf << sceneIn.rdbuf();
+  const std::string sceneText = sceneBuf.str();
+  const int maxThreads = static_cast<int>(*std::max_element(threadList.begin(), threadList.end()));
+
+  // 1. Memory first, while the peak RSS is still this process's baseline: a dam break near 1e6
+  // particles, two steps.
+  if (memoryDx > 0) {
+    const double before = peakRss();
+    const auto r = runDamBreak(sceneText, memoryDx, 0, maxThreads, 2);
+    const double after = peakRss();
+    std::printf(
+        "memory: dam break dx %g, %zu particles: peak RSS %.1f MB, %.0f bytes/particle "
+        "(%.0f above the %.1f MB baseline)\n",
+        memoryDx, r.particles, after / 1e6, after / r.particles, (after - before) / r.particles,
+        before / 1e6);
+  }
+
+  // 2. Peak flop rate.
+  std::map<int, double> peakAvx, peakSse;
+  for (double t : threadList) {
+    peakAvx[int(t)] = peakFlops<1>(int(t));
+    peakSse[int(t)] = peakFlops<2>(int(t));
+    std::printf(
+        "peak double flops, %d thread(s): %.2f GFlop/s (AVX2 FMA), %.2f GFlop/s (SSE2 "
+        "mul+add, the build's ISA)\n",
+        int(t), peakAvx[int(t)] / 1e9, peakSse[int(t)] / 1e9);
+  }
+
+  // 3. Throughput of the force evaluation (quadratic kernel, every term: the dam break's menu).
+  const sph::TermSwitches all{true, true, true};
+  Json scaling{"force evaluation, 2-D block, quadratic kernel, all terms",
+               "fluid particles",
+               "ns per particle evaluation",
+               "perf/sph_bench, best of 5 batches",
+               {}};
+  Json flopFraction{"force evaluation: fraction of the flop-count bound",
+                    "fluid particles",
+                    "achieved / peak (AVX2 FMA) double flop rate",
+                    "",
+                    {}};
+  std::printf("\n%10s %8s %8s %12s %12s %10s %10s %10s\n", "particles", "threads", "pairs/p",
+              "ns/particle", "Mpart/s", "GFlop/s", "of AVX2", "of SSE2");
+  std::map<int, std::pair<std::vector<double>, std::vector<double>>> sc, ff;
+  for (double n : sizes) {
+    sph::perf::Block2D b = sph::perf::makeBlock(static_cast<std::size_t>(n));
+    const double pairs = static_cast<double>(sph::perf::countPairs(b.set));
+    const double nf = static_cast<double>(b.set.nFluid);
+    for (double t : threadList) {
+      omp_set_num_threads(int(t));
+      sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, all, 1.0);
+      const double s = timePerCall([&] { force(b.set, b.out); }, n >= 1e6 ? 0.5 : 0.2);
+      const double flops = pairs * sph::perf::PairFlops::of(all) / s;
+      std::printf("%10.0f %8d %8.1f %12.1f %12.2f %10.2f %9.1f%% %9.1f%%\n", nf, int(t), pairs / nf,
+                  1e9 * s / nf, nf / s / 1e6, flops / 1e9, 100 * flops / peakAvx[int(t)],
+                  100 * flops / peakSse[int(t)]);
+      sc[int(t)].first.push_back(nf), sc[int(t)].second.push_back(1e9 * s / nf);
+      ff[int(t)].first.push_back(nf), ff[int(t)].second.push_back(flops / peakAvx[int(t)]);
+    }
+  }
+  for (auto& [t, xy] : sc) scaling.series.push_back({std::to_string(t) + " thread(s)", xy});
+  for (auto& [t, xy] : ff) flopFraction.series.push_back({std::to_string(t) + " thread(s)", xy});
+  flopFraction.source = "flops per pair counted from the source (perf/Workload.hpp: " +
+                        std::to_string(sph::perf::PairFlops::of(all)) +
+                        " for all terms); peak from a 12-chain FMA kernel on the same machine";
+  scaling.write(std::filesystem::path(outDir) / "perf_force_scaling.json");
+  flopFraction.write(std::filesystem::path(outDir) / "perf_flop_fraction.json");
+
+  // 4. Each term combination alone, 2e4 particles, 1 thread.
+  {
+    sph::perf::Block2D b = sph::perf::makeBlock(20000);
+    const double pairs = static_cast<double>(sph::perf::countPairs(b.set));
+    const double nf = static_cast<double>(b.set.nFluid);
+    omp_set_num_threads(1);
+    Json terms{"cost of each term combination (2e4 particles, 1 thread)",
+               "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h",
+               "ns per particle evaluation",
+               "",
+               {}};
+    std::vector<double> x, y;
+    std::printf("\n%5s %-70s %12s %8s %10s\n", "menu", "terms (quadratic kernel)", "ns/particle",
+                "flops/p", "GFlop/s");
+    for (int t = 0; t < 8; ++t) {
+      sph::TermSwitches sw{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0};
+      sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, sw, 1.0);
+      const double s = timePerCall([&] { force(b.set, b.out); });
+      std::string label;
+      for (const auto& name : force.termNames()) label += (label.empty() ? "" : "+") + name;
+      std::printf("%5d %-70s %12.1f %8d %10.2f\n", t, label.c_str(), 1e9 * s / nf,
+                  sph::perf::PairFlops::of(sw), pairs * sph::perf::PairFlops::of(sw) / s / 1e9);
+      x.push_back(t), y.push_back(1e9 * s / nf);
+      terms.source += (t ? "; " : "") + std::to_string(t) + ": " + label;
+    }
+    terms.series.push_back({"quadratic kernel", {x, y}});
+    for (int k = 0; k < 3; ++k) {
+      const auto kind = static_cast<sph::KernelKind>(k);
+      sph::ForceEvaluation<2> force(kind, all, 1.0);
+      const double s = timePerCall([&] { force(b.set, b.out); });
+      std::printf("%5d %-70s %12.1f\n", 7, (std::string(sph::name(kind)) + ", all terms").c_str(),
+                  1e9 * s / nf);
+    }
+    terms.write(std::filesystem::path(outDir) / "perf_term_costs.json");
+  }
+
+  // 5. The dam break end to end.
+  if (damBreak) {
+    // DualSPHysics 5.4 on the paper's dam break (Wendland, one force evaluation per step, to
+    // t = 1.3 s, 2 threads), measured on this kind of 2-core machine (issue 7).
+    const std::map<double, std::array<double, 3>> peer{
+        {0.01, {1484, 12411, 5.2}}, {0.005, {5467, 26763, 57.5}}, {0.0025, {20933, 56345, 466.0}}};
+    std::printf("\n%8s %8s %10s %8s %8s %10s %12s %12s %10s %18s\n", "dx", "threads", "particles",
+                "steps", "evals", "wall [s]", "Mpart-ev/s", "ns/part-ev", "peer [s]", "state hash");
+    std::map<int, std::pair<std::vector<double>, std::vector<double>>> ours;
+    std::vector<double> px, py;
+    for (double dx : dxs) {
+      std::map<int, std::uint64_t> hashes;
+      for (double t : threadList) {
+        const auto r = runDamBreak(sceneText, dx, endTime, int(t));
+        const double pe = double(r.particles) * double(r.evaluations);
+        const auto p = peer.find(dx);
+        std::printf("%8g %8d %10zu %8ld %8ld %10.2f %12.2f %12.1f %10s %18llx%s\n", dx, int(t),
+                    r.particles, r.steps, r.evaluations, r.wall, pe / r.wall / 1e6,
+                    1e9 * r.wall / pe,
+                    p != peer.end() ? std::to_string(p->second[2]).substr(0, 5).c_str() : "-",
+                    static_cast<unsigned long long>(r.hash), r.failed ? " FAILED" : "");
+        std::fflush(stdout);
+        hashes[int(t)] = r.hash;
+        ours[int(t)].first.push_back(double(r.particles)), ours[int(t)].second.push_back(r.wall);
+      }
+      bool same = true;
+      for (auto& [t, h] : hashes) same = same && h == hashes.begin()->second;
+      std::printf("dx %g: final states %s for every thread count\n", dx,
+                  same ? "bit-identical" : "DIFFER");
+      const auto p = peer.find(dx);
+      if (p != peer.end() && endTime <= 0) px.push_back(p->second[0]), py.push_back(p->second[2]);
+    }
+    std::ostringstream title;
+    title << "dam break to t = " << (endTime > 0 ? endTime : 1.3) << " s, wall time";
+    Json db{title.str(),
+            "particles",
+            "wall time [s]",
+            "ours: quadratic kernel, all terms, predictor-corrector (2 force evaluations a step); "
+            "DualSPHysics 5.4: Wendland, 1 force evaluation a step, 2 threads (issue 7)",
+            {}};
+    for (auto& [t, xy] : ours)
+      db.series.push_back({"ours, " + std::to_string(t) + " thread(s)", xy});
+    if (!px.empty()) db.series.push_back({"DualSPHysics 5.4, 2 threads", {px, py}});
+    db.write(std::filesystem::path(outDir) / "perf_dam_break.json");
+  }
+  return 0;
+}
