@@ -116,6 +116,7 @@ void Simulation<D>::reflectAtWalls(Particles<D>& s) {
         const double wall = side == 0 ? bounds_.lower[a] : bounds_.upper[a];
         const double depth = side == 0 ? wall - s.r[i][a] : s.r[i][a] - wall;
         if (depth <= 0 || depth > tolerated) continue;  // deeper: check() reports the failure
+        reflectionDepth_ = std::max(reflectionDepth_, depth);
         s.r[i][a] = 2 * wall - s.r[i][a];
         s.v[i][a] = 2 * bounds_.wallVelocity[a][side][a] - s.v[i][a];
         ++reflections_;

@@ -59,6 +59,8 @@ class Simulation {
   // growing, repulsion as a particle nears its own ghost, so a thin free-surface layer on a wall
   // (the dam-break toe) can creep through it; deeper crossings are wall_penetration failures.
   long wallReflections() const { return reflections_; }
+  // The deepest such crossing so far [m] (at most dx/2), for the wall tests of issue 3.
+  double maxReflectionDepth() const { return reflectionDepth_; }
   const ForceEvaluation<D>& forces() const { return forces_; }
   std::vector<std::string> termNames() const;
 
@@ -78,6 +80,7 @@ class Simulation {
   double t_ = 0.0, dt_ = 0.0, dtFloor_ = 0.0;
   TimeStepLimit limit_ = TimeStepLimit::acoustic;
   long step_ = 0, evaluations_ = 0, reflections_ = 0;
+  double reflectionDepth_ = 0.0;
   bool ratesValid_ = false;
 };
 
