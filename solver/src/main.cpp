@@ -4,10 +4,12 @@
 
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
+#include "sph/packing/PackingScene.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"sph: weakly compressible SPH (Lobovsky & Kren) with a V&V harness"};
-  app.set_version_flag("--version", std::string("sph ") + SPH_VERSION + " (" + SPH_GIT_COMMIT + ")");
+  app.set_version_flag("--version",
+                       std::string("sph ") + SPH_VERSION + " (" + SPH_GIT_COMMIT + ")");
   app.require_subcommand(1);
   std::string scenePath;
   sph::RunOptions options;
@@ -23,11 +25,29 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "read and validate a scene file, run nothing");
   check->add_option("scene", scenePath, "scene file (TOML)")->required();
 
+  // Colagrossi et al. (2012) particle packing: its own scene format (validation/packing/README.md).
+  sph::packing::PackOptions packOptions;
+  auto* pack =
+      app.add_subcommand("pack", "pack the particles of a packing scene, write <out>/<name>.h5");
+  pack->add_option("scene", scenePath, "packing scene file (TOML)")->required();
+  pack->add_option("--out", packOptions.outDir, "output directory")->capture_default_str();
+  pack->add_option("--threads", packOptions.threads, "OpenMP threads (default: all)")
+      ->check(CLI::NonNegativeNumber);
+  pack->add_flag("--quiet", packOptions.quiet, "print nothing but errors");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : sph::exitBadInput;
+  }
+  if (pack->parsed()) {
+    try {
+      return sph::packing::packScene(sph::packing::readPackingScene(scenePath), packOptions);
+    } catch (const std::exception& e) {  // SceneError: bad input, named by file and key
+      std::cerr << "error: " << e.what() << "\n";
+      return sph::exitBadInput;
+    }
   }
   sph::Scene scene;
   try {

@@ -1,0 +1,89 @@
+#pragma once
+// The particle packing algorithm of Colagrossi, Bouscasse, Antuono & Marrone (2012), eq. (2.16):
+//   du_i/dt = -beta grad Gamma_i - zeta u_i,   dr_i/dt = u_i,
+//   Gamma_i = sum_j W_ij V0,  grad Gamma_i = sum_j grad_i W_ij V0  (j over fluid and fixed solid),
+//   beta = 2 p0 / rho0,  zeta = alpha sqrt(beta) / V0^(1/D)  (eq. 2.15),  dt = CFL V0^(1/D) /
+//   sqrt(beta) (eq. 2.17), from rest on a lattice. The fluid particles drift down grad Gamma until
+//   the
+// distribution is as even as the kernel can see (grad Gamma -> 0, eq. 1.12), the fixed solid
+// particles closing the domain along walls and free surface.
+//
+// Without damping the system is Lagrangian (Appendix B): E = T + V is conserved, with
+//   T = sum_i |u_i|^2 / 2                                  (eq. 2.18, fluid i; "specific": per unit
+//   mass) V = beta/2 sum_i sum_j W_ij V0 + beta sum_i sum_j' W_ij V0   (eq. B.34; j fluid, j'
+//   solid),
+// because -dV/dr_i = -beta grad Gamma_i. With damping dE/dt = -2 zeta T (eq. B.33).
+#include <functional>
+#include <vector>
+
+#include "sph/EquationOfState.hpp"
+#include "sph/Kernels.hpp"
+#include "sph/packing/Geometry.hpp"
+
+namespace sph::packing {
+
+struct PackingParameters {
+  KernelKind kernel = KernelKind::wendland_c2;
+  double hOverDx = 2.0;
+  double beta = 1.0;    // 2 p0 / rho0 [m^2/s^2]; the packed positions do not depend on it
+  double alpha = 2e-3;  // eq. (2.15); the paper finds 1e-3 .. 5e-3 good
+  double cfl = 1.0;     // eq. (2.17)
+  int maxIterations = 10000;
+  double stopKineticEnergy = 1e-8;  // stop when T / beta falls below this (paper, section 3.1)
+};
+
+// One iteration's figures, all in units of beta where they carry its dimension.
+struct PackingRecord {
+  int iteration = 0;
+  double kinetic = 0.0;       // T / beta, T of eq. (2.18): the sum over fluid particles
+  double kineticMean = 0.0;   // T / (N beta), the same per fluid particle
+  double potential = 0.0;     // V / beta, eq. (B.34)
+  double maxGradGamma = 0.0;  // max_i |grad Gamma_i| [1/m]
+};
+
+class ParticlePacking {
+ public:
+  // `fluid` moves, `solid` stays; every particle has volume V0; h = hOverDx dx.
+  ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0, double dx,
+                  const PackingParameters& parameters);
+
+  void step();  // one iteration of eq. (2.16)
+  // Steps until T/beta < stopKineticEnergy or maxIterations; `observe` sees every record,
+  // the start (iteration 0) included. Returns whether it stopped on the kinetic energy.
+  bool run(const std::function<void(const PackingRecord&)>& observe = {});
+
+  PackingRecord record() const;
+  int iteration() const { return iteration_; }
+  double dt() const { return dt_; }
+  double zeta() const { return zeta_; }
+  double h() const { return h_; }
+  double V0() const { return V0_; }
+  const PackingParameters& parameters() const { return parameters_; }
+  const std::vector<Vec2>& positions() const { return x_; }
+  const std::vector<Vec2>& velocities() const { return u_; }
+  void setVelocities(std::vector<Vec2> u) { u_ = std::move(u); }
+  const std::vector<Vec2>& solid() const { return solid_; }
+  const std::vector<Vec2>& gradGamma() const { return gradGamma_; }  // [1/m]
+  const std::vector<double>& gamma() const { return gamma_; }
+
+ private:
+  void evaluate();  // Gamma, grad Gamma and V at the current positions
+
+  PackingParameters parameters_;
+  std::vector<Vec2> x_, u_, solid_, all_;
+  std::vector<Vec2> gradGamma_;
+  std::vector<double> gamma_, potentialTerm_;
+  double V0_, h_, dt_, zeta_;
+  double potential_ = 0.0;
+  int iteration_ = 0;
+};
+
+// Section 2: after packing, the hydrostatic pressure p = p0 + rho0 g (surface - y), the density
+// from the inverse of the Tait equation of state, and the mass m = rho V0.
+struct HydrostaticFields {
+  std::vector<double> pressure, density, mass;
+};
+HydrostaticFields hydrostatic(const std::vector<Vec2>& x, double V0, const Phase& phase,
+                              double gravity, double surface);
+
+}  // namespace sph::packing

@@ -1,0 +1,44 @@
+// Colagrossi et al. (2012), section 3.1, Fig. 6: the trapezoidal tank at H/dx = 50 and 100, with
+// alpha = 2e-3 (this project's default) and 5e-3 (the top of the paper's range).
+#include <gtest/gtest.h>
+
+#include "Results.hpp"
+#include "TrapezoidalTank.hpp"
+
+namespace sph::packing {
+namespace {
+
+void packAt(double HOverDx, double alpha, int limit) {
+  const TankFigures f = packTank(HOverDx, alpha, 2 * limit);
+  verification::Results r;
+  const std::string tag = ", H/dx = " + std::to_string(static_cast<int>(HOverDx)) + ", alpha = " +
+                          (alpha == 5e-3 ? std::string("5e-3") : std::string("2e-3"));
+  // T decays like exp(-alpha n) (see TrapezoidalTankTest.cpp): the iteration limits scale as
+  // 1/alpha from the paper's ~2,500 at the top of its alpha range, with the quick test's margin.
+  EXPECT_TRUE(r.check("iterations to T/beta < 1e-8 (T = sum, eq. 2.18)" + tag, f.iterations, "<=",
+                      limit, "Colagrossi et al. 2012 Fig. 6 (about 2,500), scaled by 5e-3/alpha"));
+  EXPECT_TRUE(r.check("iterations to T/(N beta) < 1e-8" + tag, f.iterationsMean, "<=", limit,
+                      "Colagrossi et al. 2012 Fig. 6 (about 2,500), scaled by 5e-3/alpha"));
+  EXPECT_TRUE(r.check("H max|grad Gamma|, Cartesian lattice" + tag, f.gradStart, ">=", 0.1,
+                      "Colagrossi et al. 2012 Fig. 5 left: O(1)"));
+  EXPECT_TRUE(r.check("H max|grad Gamma| after / before" + tag, f.gradEnd / f.gradStart, "<=", 1e-2,
+                      "Colagrossi et al. 2012 section 3.1: orders smaller after packing"));
+  EXPECT_TRUE(r.check("fluid particles outside the fluid region after packing" + tag, f.outside,
+                      "<=", 0, "section 2: the domain is closed by the fixed solid particles"));
+}
+
+TEST(TrapezoidalTankNightly, HOverDx50Alpha5e3) {
+  packAt(50.0, 5e-3, 4000);
+}
+TEST(TrapezoidalTankNightly, HOverDx100Alpha5e3) {
+  packAt(100.0, 5e-3, 4000);
+}
+TEST(TrapezoidalTankNightly, HOverDx50Alpha2e3) {
+  packAt(50.0, 2e-3, 10000);
+}
+TEST(TrapezoidalTankNightly, HOverDx100Alpha2e3) {
+  packAt(100.0, 2e-3, 10000);
+}
+
+}  // namespace
+}  // namespace sph::packing
