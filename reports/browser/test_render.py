@@ -39,7 +39,7 @@ def build_report(tmp_path: Path) -> Path:
 
 
 def test_report_renders_in_chromium(tmp_path):
-    report = Path(os.environ["REPORT_DIR"]) if os.environ.get("REPORT_DIR") else build_report(tmp_path)
+    report = Path(os.environ["REPORT_DIR"]).resolve() if os.environ.get("REPORT_DIR") else build_report(tmp_path)
     index = report / "index.html"
     assert index.exists(), f"no report at {index}"
     profile = tmp_path / "profile"

@@ -11,11 +11,16 @@ namespace sph {
 
 std::string_view name(FailureCause c) {
   switch (c) {
-    case FailureCause::nan: return "nan";
-    case FailureCause::density_band: return "density_band";
-    case FailureCause::escaped_domain: return "escaped_domain";
-    case FailureCause::wall_penetration: return "wall_penetration";
-    default: return "dt_collapse";
+    case FailureCause::nan:
+      return "nan";
+    case FailureCause::density_band:
+      return "density_band";
+    case FailureCause::escaped_domain:
+      return "escaped_domain";
+    case FailureCause::wall_penetration:
+      return "wall_penetration";
+    default:
+      return "dt_collapse";
   }
 }
 
@@ -74,12 +79,14 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
 }
 
 template <int D>
-double Simulation<D>::timeStep(TimeStepLimit& limit) const {
+double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
   double hMin = std::numeric_limits<double>::max(), v2Max = 0, a2Max = 0, cMax = 0, nuMax = 0;
+  int iH = -1, iV = -1, iA = -1;  // the particles that set each extreme
   for (std::size_t i = 0; i < y_.size(); ++i) {
-    hMin = std::min(hMin, y_.h[i]);
-    v2Max = std::max(v2Max, y_.v[i].squaredNorm());
-    a2Max = std::max(a2Max, f_.dvdt[i].squaredNorm());
+    const int k = static_cast<int>(i);
+    if (y_.h[i] < hMin) hMin = y_.h[i], iH = k;
+    if (y_.v[i].squaredNorm() > v2Max) v2Max = y_.v[i].squaredNorm(), iV = k;
+    if (f_.dvdt[i].squaredNorm() > a2Max) a2Max = f_.dvdt[i].squaredNorm(), iA = k;
   }
   for (const auto& ph : scene_.phases) {
     cMax = std::max(cMax, ph.c0);
@@ -90,9 +97,10 @@ double Simulation<D>::timeStep(TimeStepLimit& limit) const {
   const double viscous = nuMax > 0 ? scene_.cflViscous * hMin * hMin / nuMax : 1e300;
   const double accel = a2Max > 0 ? scene_.cflForce * std::sqrt(hMin / std::sqrt(a2Max)) : 1e300;
   limit = TimeStepLimit::acoustic;
+  particle = iV >= 0 ? iV : iH;
   double dt = acoustic;
-  if (viscous < dt) dt = viscous, limit = TimeStepLimit::viscous;
-  if (accel < dt) dt = accel, limit = TimeStepLimit::acceleration;
+  if (viscous < dt) dt = viscous, limit = TimeStepLimit::viscous, particle = iH;
+  if (accel < dt) dt = accel, limit = TimeStepLimit::acceleration, particle = iA;
   return dt;
 }
 
@@ -171,7 +179,8 @@ void Simulation<D>::prepare() {
   rates(y_, t_, f_);
   ratesValid_ = true;
   TimeStepLimit l;
-  if (dtFloor_ == 0) dtFloor_ = scene_.dtFloor > 0 ? scene_.dtFloor : 1e-4 * timeStep(l);
+  int who;
+  if (dtFloor_ == 0) dtFloor_ = scene_.dtFloor > 0 ? scene_.dtFloor : 1e-4 * timeStep(l, who);
 }
 
 template <int D>
@@ -179,16 +188,17 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   const std::size_t n = y_.size();
   prepare();
   TimeStepLimit limit;
-  const double dtStable = timeStep(limit);
+  int limiting = -1;
+  const double dtStable = timeStep(limit, limiting);
   if (!(dtStable >= dtFloor_)) {
     std::ostringstream m;
-    m << "step " << step_ << ", t = " << t_ << " s: time step " << dtStable
-      << " s collapsed below the floor " << dtFloor_ << " s ("
+    m << "step " << step_ + 1 << ", t = " << t_ << " s, particle " << limiting << ": time step "
+      << dtStable << " s collapsed below the floor " << dtFloor_ << " s ("
       << (limit == TimeStepLimit::acoustic  ? "acoustic"
           : limit == TimeStepLimit::viscous ? "viscous"
                                             : "acceleration")
-      << " limit)";
-    return Failure{FailureCause::dt_collapse, step_, t_, -1, m.str()};
+      << " limit, set by this particle)";
+    return Failure{FailureCause::dt_collapse, step_ + 1, t_, limiting, m.str()};
   }
   const double dt = std::min(dtStable, dtMax);
   // Predictor.

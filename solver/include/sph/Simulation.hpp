@@ -65,7 +65,9 @@ class Simulation {
   std::vector<std::string> termNames() const;
 
  private:
-  double timeStep(TimeStepLimit& limit) const;
+  // The stable step and what limits it; `particle` is the one with the extreme speed, h or
+  // acceleration.
+  double timeStep(TimeStepLimit& limit, int& particle) const;
   std::optional<Failure> check(const Particles<D>& s, double t, long step) const;
   void wrapPeriodic(Particles<D>& s) const;
   void reflectAtWalls(Particles<D>& s);
