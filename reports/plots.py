@@ -230,6 +230,10 @@ def stability(sweep: dict, out: Path, index: int, quick: bool = False):
             ax.scatter([p["x"] for p in pts], [p["y"] for p in pts], c=color, marker=marker, s=40, label=outcome)
     ax.set_xlabel(sweep.get("x_label", "x"))
     ax.set_ylabel(sweep.get("y_label", "y"))
+    if sweep.get("x_log"):
+        ax.set_xscale("log")
+    if sweep.get("y_log"):
+        ax.set_yscale("log")
     ticks = sweep.get("y_ticks")  # categorical axes (e.g. the kernel)
     if ticks:
         ax.set_yticks(ticks["values"], ticks["labels"])

@@ -10,6 +10,16 @@ tank at rest, final max|u| above 0.05 sqrt(gH) (our threshold: a tank at rest wh
 reach 5 % of the gravity-wave speed is not at rest; the packing paper reports ~0.1 sqrt(gH) at
 t sqrt(g/H) = 10 from a Cartesian start near sloping walls, so it separates that level from rest).
 
+Known failure modes, each from a small scene of its own:
+  tensile instability  closed box (closed_box.toml.in) with the background pressure p0 setting the sign of
+                       p: clumping when the smallest particle distance of the final state is below dx/2
+                       (a lattice has dx; clumped pairs measured here sit at 0.05-0.08 dx, an intact
+                       Wendland lattice at 0.99 dx);
+  wall penetration     block thrown at a wall (block_impact.toml.in): the solver's wall_penetration, or any
+                       particle that ended a step beyond the wall and was reflected back (wall_reflections);
+  high-Mach density    the same impact: max |rho/rho0 - 1| above 1 %, the density variation that the
+                       c0 >= 10 max|v| rule is chosen to keep (Monaghan 1994).
+
 Usage: sweep.py --sph BIN --out DIR [--sweep NAME ...] [--jobs 2]
 Writes DIR/<sweep>.json in the report's stability format and prints a table.
 """
@@ -29,11 +39,15 @@ G, H = 9.81, 0.25
 KERNELS = ["quadratic", "cubic_spline", "wendland_c2"]
 # The paper's dam break: c0 = 24.4 m/s, beta = 1, h = 1.33 dx, CFL 0.25 (Morris et al. 1997).
 BASE = dict(c0=24.4, beta=1.0, variable_h="true", kernel="quadratic", dx=0.02, h_over_dx=1.33,
-            cfl=0.25, cfl_force=0.25, end_time=0.8)
+            cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0)
+RHO_G_BOX = 1000.0 * G * 0.2  # hydrostatic pressure at the bottom of the closed box [Pa]
+IMPACT_SPEED = 2.0  # block_impact.toml.in [m/s]
 
 
 def sweeps():
-    """name -> (template, x label, y label, list of (x, y, parameters)), y_ticks."""
+    """name -> (template, x label, y label, list of (x, y, parameters), y axis): the y axis is a list of
+    category labels (y is their index), None (y is the volume variation in %), or the name of a result
+    field plotted as y."""
     out = {}
     cfls = [0.1, 0.25, 0.4, 0.6, 0.8, 1.0, 1.3, 1.6]
     for case in ("dam_break", "hydrostatic_tank"):
@@ -56,7 +70,27 @@ def sweeps():
     out["variable_h_dam_break"] = ("dam_break", "variable h (0 off, 1 on)", "kernel",
                                    [(v, k, dict(variable_h="true" if v else "false", kernel=kern))
                                     for v in (0, 1) for k, kern in enumerate(KERNELS)], KERNELS)
+    out["tensile_instability_closed_box"] = (
+        "closed_box", "p0 / (rho0 g H)   (p < 0 everywhere below -1)", "kernel",
+        [(r, k, dict(p0=round(r * RHO_G_BOX, 3), kernel=kern, c0=20.0, beta=0.1, variable_h="false", dx=0.01,
+                     end_time=1.0))
+         for r in (-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0) for k, kern in enumerate(KERNELS)], KERNELS)
+    machs = [0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8]
+    impact = [(m, b, dict(c0=round(IMPACT_SPEED / m, 4), beta=b, variable_h="false", dx=0.005, end_time=0.075))
+              for m in machs for b in (0.0, 1.0)]
+    out["wall_penetration_block_impact"] = ("block_impact", "impact Mach number U / c0", "artificial viscosity beta",
+                                            impact, None)
+    out["high_mach_density_block_impact"] = ("block_impact", "impact Mach number U / c0 (beta 0 and 1)",
+                                             "max |rho/rho0 - 1| [%]", impact, "density_error_pct")
     return out
+
+
+def min_pair_distance(positions):
+    """Smallest distance between two particles (O(N^2); the failure-mode scenes have a few hundred)."""
+    import numpy as np
+    d2 = ((positions[:, None, :] - positions[None, :, :]) ** 2).sum(-1)
+    np.fill_diagonal(d2, np.inf)
+    return float(np.sqrt(d2.min()))
 
 
 def run_point(sph, template, params, workdir):
@@ -81,15 +115,33 @@ def run_point(sph, template, params, workdir):
                    wall_reflections=int(m.get("wall_reflections", 0)), end_time=float(m["end_time"]))
         speed = f["series/max_speed"][:]
         res["final_max_speed"] = float(speed[-1]) if len(speed) else float("nan")
+        rho = [f["series/rho_min"][:], f["series/rho_max"][:]]
+        if len(rho[0]):
+            res["density_error_pct"] = 100 * max(abs(rho[0].min() / 1000.0 - 1), abs(rho[1].max() / 1000.0 - 1))
+        snaps = sorted(f["snapshots"])
+        if template == "closed_box" and snaps:
+            res["min_pair_distance_dx"] = min_pair_distance(f["snapshots"][snaps[-1]]["position"][:, :2]) / p["dx"]
     if status != "stable":
         res.update(outcome="unstable", cause=cause)
     elif template == "dam_break" and res["volume_variation"] > 0.003:  # paper: < 0.3 %
         res.update(outcome="inaccurate", cause="volume variation above 0.3 %")
     elif template == "hydrostatic_tank" and res["final_max_speed"] > 0.05 * math.sqrt(G * H):
         res.update(outcome="inaccurate", cause="spurious currents above 0.05 sqrt(gH)")
+    elif template == "closed_box" and res["min_pair_distance_dx"] < 0.5:
+        res.update(outcome="inaccurate", cause="particle clumping (closest pair below dx/2)")
+    elif template == "block_impact" and res["wall_reflections"] > 0:
+        res.update(outcome="inaccurate", cause="particles reached the wall (reflected back)")
     else:
         res.update(outcome="stable", cause="")
     return res
+
+
+def density_view(res):
+    """The high-Mach map's outcome: the solver's own, else the 1 % density criterion (Monaghan 1994)."""
+    if res["outcome"] == "unstable":
+        return res
+    bad = res.get("density_error_pct", 0.0) > 1.0
+    return dict(res, outcome="inaccurate" if bad else "stable", cause="density error above 1 %" if bad else "")
 
 
 def main():
@@ -102,16 +154,27 @@ def main():
     all_sweeps = sweeps()
     names = args.sweep or list(all_sweeps)
     args.out.mkdir(parents=True, exist_ok=True)
+    done = {}  # sweeps that share their runs (the two block-impact maps) run them once
     for name in names:
         template, xl, yl, pts, yticks = all_sweeps[name]
-        with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-            results = list(pool.map(lambda pt: run_point(args.sph, template, pt[2], work), pts))
+        key = (template, json.dumps([pt[2] for pt in pts], sort_keys=True))
+        if key not in done:
+            with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+                done[key] = list(pool.map(lambda pt: run_point(args.sph, template, pt[2], work), pts))
+        results = done[key]
         points = []
         for (x, y, params), res in zip(pts, results):
-            if y is None:  # the Mach sweep plots the volume variation itself
+            if yticks == "density_error_pct":
+                res = density_view(res)
+                y = res.get("density_error_pct", float("nan"))
+            elif y is None:  # the Mach sweep plots the volume variation itself
                 y = 100 * res.get("volume_variation", float("nan"))
             points.append(dict(x=x, y=y, params=params, **res))
+        yticks = None if isinstance(yticks, str) else yticks
         doc = dict(sweep=name, case=template, x_label=xl, y_label=yl, points=points)
+        if "Mach number" in xl:  # 0.01 to 0.8, density errors from 1 % to 80 %
+            doc["x_log"] = True
+            doc["y_log"] = yl.startswith("max |rho")
         if yticks:
             doc["y_ticks"] = dict(values=list(range(len(yticks))), labels=yticks)
         (args.out / f"{name}.json").write_text(json.dumps(doc, indent=1))
