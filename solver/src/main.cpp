@@ -1,10 +1,24 @@
 // The `sph` program: run or check a scene file.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <stdexcept>
 
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
 #include "sph/packing/PackingScene.hpp"
+
+namespace {
+
+// Bad input (SceneError, invalid_argument: named by file and key) exits 2; anything else that stops
+// a run is the output failing to be written (HDF5, the file system) and exits 4.
+int reportError(const std::exception& e) {
+  std::cerr << "error: " << e.what() << "\n";
+  const bool badInput = dynamic_cast<const sph::SceneError*>(&e) != nullptr ||
+                        dynamic_cast<const std::invalid_argument*>(&e) != nullptr;
+  return badInput ? sph::exitBadInput : sph::exitOutputError;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"sph: weakly compressible SPH (Lobovsky & Kren) with a V&V harness"};
@@ -44,9 +58,8 @@ int main(int argc, char** argv) {
   if (pack->parsed()) {
     try {
       return sph::packing::packScene(sph::packing::readPackingScene(scenePath), packOptions);
-    } catch (const std::exception& e) {  // SceneError: bad input, named by file and key
-      std::cerr << "error: " << e.what() << "\n";
-      return sph::exitBadInput;
+    } catch (const std::exception& e) {
+      return reportError(e);
     }
   }
   sph::Scene scene;
@@ -65,7 +78,6 @@ int main(int argc, char** argv) {
   try {
     return sph::runScene(scene, options);
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
-    return sph::exitBadInput;
+    return reportError(e);
   }
 }

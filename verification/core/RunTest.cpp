@@ -83,6 +83,18 @@ TEST(FailureDetection, TimeStepCollapse) {
   expectFailure("fail_dt_collapse.toml", "fail_dt_collapse", "dt_collapse");
 }
 
+// An output directory that cannot be made (here: the path is an existing file) stops the run with
+// exit 4 (Run.hpp: exitOutputError) and a message naming the path, and the file is left as it was.
+TEST(OutputError, OutputPathIsAFile) {
+  const std::string out = freshOutputDirectory() + "/not_a_directory";
+  writeText(out, "written before the run\n");
+  const ProgramResult r =
+      runSph("run '" + scenePath("small_tank.toml") + "' --out '" + out + "' --threads 1 --quiet");
+  EXPECT_EQ(r.exitCode, 4) << r.output;
+  EXPECT_NE(r.output.find(out), std::string::npos) << r.output;
+  EXPECT_EQ(readText(out), "written before the run\n");
+}
+
 // Every DataItem of the XDMF sidecar names "<file>:<dataset>" and its Dimensions; each must exist
 // in the HDF5 file with exactly that shape, or ParaView shows garbage.
 TEST(RunFile, XdmfMatchesHdf5) {

@@ -6,7 +6,9 @@
 
 namespace sph {
 
-enum ExitCode { exitDone = 0, exitBadInput = 2, exitNumericalFailure = 3 };
+// exitOutputError: the run file or the output directory cannot be written (a full disk, a path that
+// is a file); the message names the path.
+enum ExitCode { exitDone = 0, exitBadInput = 2, exitNumericalFailure = 3, exitOutputError = 4 };
 
 struct RunOptions {
   std::string outDir = ".";
