@@ -12,8 +12,10 @@ color:#222;padding:0 1em}
 .banner{font-size:2.4em;font-weight:700;padding:.5em .8em;border-radius:8px;color:#fff;margin-bottom:.4em}
 .banner small{font-size:.45em;font-weight:400;display:block}
 .b-pass{background:#2e7d32}.b-fail{background:#c62828}.b-none{background:#757575}
-table{border-collapse:collapse;margin:.6em 0;font-size:.88em}
-th,td{border:1px solid #ccc;padding:.25em .5em;text-align:left;vertical-align:top}
+table{border-collapse:collapse;margin:.6em 0;font-size:.88em;max-width:100%}
+th,td{border:1px solid #ccc;padding:.25em .5em;text-align:left;vertical-align:top;overflow-wrap:anywhere}
+th{overflow-wrap:normal}table.criteria td.crit{min-width:18em}
+table.criteria td.num,table.criteria td:first-child{white-space:nowrap;overflow-wrap:normal}
 th{background:#f0f0f0}
 tr.fail td{background:#fdecea}tr.notrun td{background:#f5f5f5;color:#666}
 .r-pass{color:#2e7d32;font-weight:700}.r-fail{color:#c62828;font-weight:700}.r-notrun{color:#666}
@@ -52,20 +54,36 @@ def banner(c: dict, problems: list) -> str:
     return f'<div class="banner {cls}">{word}<small>{detail}</small></div>{extra}'
 
 
+def case_tally(criteria: list) -> str:
+    """One line per case: how many of its criteria passed, failed, were not run (failing cases first)."""
+    tally: dict = {}
+    for c in criteria:
+        t = tally.setdefault(c.case, {PASS: 0, FAIL: 0, NOT_RUN: 0})
+        t[c.outcome] += 1
+    order = sorted(tally, key=lambda k: (-tally[k][FAIL], -tally[k][NOT_RUN], k))
+    rows = "".join(
+        f'<tr class="{"fail" if tally[k][FAIL] else "pass"}"><td>{escape(k)}</td><td>{tally[k][PASS]}</td>'
+        f'<td class="{"r-fail" if tally[k][FAIL] else ""}">{tally[k][FAIL]}</td><td>{tally[k][NOT_RUN]}</td></tr>'
+        for k in order)
+    return ("<table><tr><th>case</th><th>passed</th><th>failed</th><th>not run</th></tr>" + rows + "</table>"
+            if rows else "")
+
+
 def summary_table(criteria: list) -> str:
     rows = []
     for c in criteria:
         cls = {FAIL: "fail", NOT_RUN: "notrun", PASS: "pass"}[c.outcome]
         title = escape(c.message, quote=True)
         detail = f'<br><span class="note">{escape(c.message)}</span>' if c.outcome == FAIL else ""
+        run = f'<br><span class="note">{escape(c.run)}</span>' if c.run else ""
         rows.append(
-            f'<tr class="{cls}" title="{title}"><td>{escape(c.case)}</td><td>{escape(c.run) or "&mdash;"}</td>'
-            f"<td>{escape(c.metric)}</td><td>{_fmt(c.measured)}</td>"
-            f"<td>{escape(c.comparison)} {_fmt(c.threshold)}</td><td>{escape(c.source)}</td>"
-            f'<td class="r-{cls}">{escape(c.outcome.upper())}{detail}</td><td>{_fmt(c.run_time_s)}</td></tr>')
-    head = ("<tr><th>case</th><th>run / result file</th><th>criterion</th><th>measured</th><th>threshold</th>"
-            "<th>source</th><th>result</th><th>run time [s]</th></tr>")
-    return f"<table>{head}{''.join(rows)}</table>" if rows else '<p class="note">No criteria.</p>'
+            f'<tr class="{cls}" title="{title}"><td class="r-{cls}">{escape(c.outcome.upper())}</td>'
+            f"<td>{escape(c.case)}{run}</td><td class=\"crit\">{escape(c.metric)}{detail}</td>"
+            f'<td class="num">{_fmt(c.measured)}</td><td class="num">{escape(c.comparison)} {_fmt(c.threshold)}</td>'
+            f'<td>{escape(c.source)}</td><td class="num">{_fmt(c.run_time_s)}</td></tr>')
+    head = ("<tr><th>result</th><th>case (run / result file)</th><th>criterion</th><th>measured</th>"
+            "<th>threshold</th><th>source</th><th>run time [s]</th></tr>")
+    return f'<table class="criteria">{head}{"".join(rows)}</table>' if rows else '<p class="note">No criteria.</p>'
 
 
 def environment(env: dict) -> str:
@@ -177,7 +195,7 @@ def page(report: dict) -> str:
 results: <code>{escape(r['inputs']['results'])}</code> ({r['inputs']['result_files']} files) &middot;
 criteria: <code>{escape(r['inputs']['criteria'])}</code> &middot; generated {escape(r['generated'])}.
 Also: <a href="summary.json">summary.json</a>, <a href="junit.xml">junit.xml</a>.</p>
-<section><h2>Criteria</h2>{summary_table(r['criteria'])}</section>
+<section><h2>Criteria</h2>{case_tally(r['criteria'])}{summary_table(r['criteria'])}</section>
 <section><h2>Environment</h2>{environment(r['environment'])}</section>
 <section><h2>Validation cases</h2>{cases}</section>
 <section><h2>Convergence (verification)</h2>{convergence(r['convergence'])}</section>
