@@ -4,6 +4,8 @@ Everything here is computed from what the run and result files hold; plotting ha
 """
 from __future__ import annotations
 
+import json
+
 import numpy as np
 
 import references
@@ -66,6 +68,39 @@ def speed_accuracy(runs: list, known_cases) -> dict:
                    "error": None if e is None else float(e), "particles": r.metrics.get("particles")}
                   for r, e in zip(members, errors)]
         out[case] = {"error": what, "points": sorted(points, key=lambda p: (p["method"], p["wall_time_s"]))}
+    return out
+
+
+def sweep_speed_accuracy(items: list) -> dict:
+    """Speed against accuracy across a stability sweep's runs: max volume variation against wall time, one
+    line per category of the sweep's y axis (the kernel), each point marked by its outcome, so a reader sees
+    which settings buy accuracy cheapest and where they stop working (issue 8)."""
+    out, seen = {}, set()
+    # Of two maps drawn from the same runs, keep the one whose y axis is a setting (a line per value).
+    for item in sorted(items, key=lambda it: str(it.get("y_label", "")).startswith("max")):
+        points = item.get("points") or []
+        usable = [pt for pt in points if isinstance(pt.get("wall_time"), (int, float))
+                  and isinstance(pt.get("volume_variation"), (int, float))]
+        runs = json.dumps([pt.get("params") for pt in points], sort_keys=True)
+        if len(usable) < 2 or runs in seen:  # two maps drawn from the same runs: one chart
+            continue
+        seen.add(runs)
+        labels = (item.get("y_ticks") or {}).get("labels")
+        y_is_setting = not str(item.get("y_label", "")).startswith("max")  # else y is a measured quantity
+        rows = []
+        for pt in usable:
+            y = pt.get("y")
+            if labels and isinstance(y, int) and 0 <= y < len(labels):
+                method = labels[y]
+            else:
+                method = f"{item.get('y_label', 'y')} = {y}" if y_is_setting else "all runs"
+            rows.append({"run": f"{item.get('x_label', 'x')} = {pt['x']}", "label": f"{pt['x']}",
+                         "method": method, "wall_time_s": float(pt["wall_time"]),
+                         "error": float(pt["volume_variation"]), "particles": None,
+                         "outcome": pt.get("outcome"), "cause": pt.get("cause", "")})
+        out[f"{item['sweep']} (stability sweep)"] = {
+            "error": f"max_volume_variation; points labelled by {item.get('x_label', 'x')}",
+            "points": sorted(rows, key=lambda r: (r["method"], r["wall_time_s"]))}
     return out
 
 

@@ -3,6 +3,7 @@ file name it wrote (relative to the output directory). Matplotlib is imported he
 from __future__ import annotations
 
 import re
+import textwrap
 from pathlib import Path
 
 import numpy as np
@@ -208,14 +209,21 @@ def speed_accuracy(case: str, data: dict, out: Path, quick: bool = False):
         mine = sorted((p for p in pts if p["method"] == method), key=lambda p: p["wall_time_s"])
         ax.plot([p["wall_time_s"] for p in mine], [p["error"] for p in mine], "-o", color=f"C{k}", label=method)
         for p in mine:
-            ax.annotate(f"N={p['particles']}" if p["particles"] is not None else p["run"],
-                        (p["wall_time_s"], p["error"]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+            text = p.get("label") or (f"N={p['particles']}" if p["particles"] is not None else p["run"])
+            ax.annotate(text, (p["wall_time_s"], p["error"]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+    for outcome in ("unstable", "inaccurate"):  # stability-sweep points: mark where a method stops working
+        bad = [p for p in pts if p.get("outcome") == outcome]
+        if bad:
+            color, marker = OUTCOME_STYLE[outcome]
+            style = dict(c=color) if marker == "x" else dict(facecolors="none", edgecolors=color)
+            ax.scatter([p["wall_time_s"] for p in bad], [p["error"] for p in bad], s=70, marker=marker, zorder=3,
+                       label=outcome, **style)
     if all(p["wall_time_s"] > 0 and p["error"] > 0 for p in pts):
         ax.set_xscale("log")
         ax.set_yscale("log")
     ax.set_xlabel("wall time [s] (/metrics/wall_time_s)")
     ax.set_ylabel("error")
-    ax.set_title(f"{case}: {data['error']}", fontsize=8)
+    ax.set_title(textwrap.fill(f"{case}: {data['error']}", 100), fontsize=8)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=6)
     return _save(fig, out, f"speed-accuracy-{slug(case)}.png", 80 if quick else 110)

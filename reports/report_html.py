@@ -139,12 +139,15 @@ def speed_accuracy(items: dict) -> str:
                 "(scene names like <code>dam_break_dx0.005</code>).</p>")
     parts = []
     for case, d in items.items():
+        swept = any("outcome" in p for p in d["points"])  # stability-sweep points carry their outcome
         rows = "".join(f"<tr><td>{escape(p['run'])}</td><td>{escape(p['method'])}</td><td>{_fmt(p['particles'])}</td>"
-                       f"<td>{_fmt(p['wall_time_s'])}</td><td>{_fmt(p['error'])}</td></tr>" for p in d["points"])
+                       f"<td>{_fmt(p['wall_time_s'])}</td><td>{_fmt(p['error'])}</td>"
+                       + (f"<td>{escape(str(p.get('outcome')))} {escape(str(p.get('cause') or ''))}</td>" if swept else "")
+                       + "</tr>" for p in d["points"])
         parts.append(f"<h3>{escape(case)}</h3><p class=\"note\">error: {escape(d['error'])}</p>"
                      + _img(d.get("figure"), case)
                      + "<table><tr><th>run</th><th>method (kernel [terms])</th><th>particles</th>"
-                     f"<th>wall time [s]</th><th>error</th></tr>{rows}</table>")
+                     f"<th>wall time [s]</th><th>error</th>{'<th>outcome</th>' if swept else ''}</tr>{rows}</table>")
     return "".join(parts)
 
 

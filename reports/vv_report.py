@@ -99,6 +99,7 @@ def stability_items(directory, out: Path, quick: bool) -> list:
         fig = _figure(notes, "stability", plots.stability, obj, out, k, quick)
         tally = {o: sum(p["outcome"] == o for p in points) for o in plots.OUTCOME_STYLE}
         items.append({"path": str(path), "sweep": obj.get("sweep", path.stem), "x_label": obj.get("x_label"),
+                      "y_ticks": obj.get("y_ticks"),
                       "y_label": obj.get("y_label"), "points": points, "counts": tally, "figure": fig,
                       "error": "; ".join(notes)})
     return items
@@ -155,7 +156,9 @@ def main(argv=None) -> int:
     for k, entry in enumerate(conv):
         notes = []
         entry["figure"] = _figure(notes, "convergence", plots.convergence, entry, out, k, args.quick)
+    stability = stability_items(args.stability, out, args.quick)
     speed = analysis.speed_accuracy(runs, table)
+    speed.update(analysis.sweep_speed_accuracy([s for s in stability if not s.get("error")]))
     for case, data in speed.items():
         data["figure"] = _figure([], "speed/accuracy", plots.speed_accuracy, case, data, out, args.quick)
 
@@ -169,7 +172,7 @@ def main(argv=None) -> int:
         "environment": analysis.environment(runs),
         "cases": case_pages(runs, found, table, out, args.quick),
         "convergence": conv, "speed_accuracy": speed,
-        "stability": stability_items(args.stability, out, args.quick),
+        "stability": stability,
         "performance": perf_items(args.perf, out, args.quick),
     }
     (out / "index.html").write_text(report_html.page(report), encoding="utf-8")

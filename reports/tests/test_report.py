@@ -165,6 +165,28 @@ def test_stability_and_perf_sections(tmp_path):
     assert summary["stability"][0]["counts"] == {"stable": 1, "unstable": 1, "inaccurate": 0}
 
 
+def test_sweep_runs_feed_speed_accuracy_with_unstable_points_marked(tmp_path):
+    (tmp_path / "stab").mkdir()
+    pts = [{"x": c, "y": k, "outcome": o, "cause": why, "params": {"cfl": c, "kernel": k},
+            "wall_time": 1.0 / c, "volume_variation": v}
+           for (c, o, why, v) in [(0.1, "stable", "", 1e-3), (0.4, "inaccurate", "volume", 5e-3),
+                                  (1.0, "unstable", "density_band", 0.2)] for k in (0, 1)]
+    doc = {"sweep": "cfl", "x_label": "CFL", "y_label": "kernel", "points": pts,
+           "y_ticks": {"values": [0, 1], "labels": ["quadratic", "wendland_c2"]}}
+    (tmp_path / "stab" / "cfl.json").write_text(json.dumps(doc))
+    # The same runs drawn as a second map (y = a measured quantity) give no second chart.
+    (tmp_path / "stab" / "cfl_volume.json").write_text(json.dumps(dict(doc, sweep="cfl_volume", y_label="max x",
+                                                                       y_ticks=None)))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--stability", str(tmp_path / "stab"))
+    html, names = images_exist(out)
+    sa = summary["speed_accuracy"]
+    assert list(sa) == ["cfl (stability sweep)"]
+    points = sa["cfl (stability sweep)"]["points"]
+    assert {p["method"] for p in points} == {"quadratic", "wendland_c2"}
+    assert sorted(p["outcome"] for p in points if p["method"] == "quadratic") == ["inaccurate", "stable", "unstable"]
+    assert any(n.startswith("speed-accuracy-cfl") for n in names) and "density_band" in html
+
+
 def test_references_load_with_their_scaling():
     for key in references.REFERENCES:
         data = references.load(key)
