@@ -1,10 +1,98 @@
 #include "sph/InitialParticles.hpp"
 
+#include <Eigen/Dense>
 #include <cmath>
+#include <numbers>
 
 #include "sph/EquationOfState.hpp"
+#include "sph/packing/Geometry.hpp"
+#include "sph/packing/ParticlePacking.hpp"
 
 namespace sph {
+
+namespace {
+
+// The block's nodes of the cell-centred Cartesian lattice (a circle's lattice is symmetric about
+// its centre).
+template <int D>
+std::vector<Vec<D>> latticeNodes(const FluidBlock& b, double dx) {
+  const bool circle = b.shape == FluidBlock::Shape::circle;
+  Vec<D> lo, hi;
+  std::array<long, D> count;
+  for (int a = 0; a < D; ++a) {
+    lo[a] = circle ? b.center[a] - b.radius : b.lower[a];
+    hi[a] = circle ? b.center[a] + b.radius : b.upper[a];
+    count[a] = std::lround((hi[a] - lo[a]) / dx);
+    if (circle) lo[a] = b.center[a] - 0.5 * dx * count[a];
+  }
+  std::vector<Vec<D>> out;
+  std::array<long, D> idx{};
+  for (;;) {
+    Vec<D> x;
+    for (int a = 0; a < D; ++a) x[a] = lo[a] + (idx[a] + 0.5) * dx;
+    bool inside = true;
+    if (circle) {
+      double d2 = 0;
+      for (int a = 0; a < D; ++a) d2 += (x[a] - b.center[a]) * (x[a] - b.center[a]);
+      inside = d2 < b.radius * b.radius;
+    }
+    if (inside) out.push_back(x);
+    int a = 0;
+    while (a < D && ++idx[a] >= count[a]) idx[a++] = 0;
+    if (a == D) break;
+  }
+  return out;
+}
+
+// Colagrossi et al. (2012) packing of a 2-D block from its lattice nodes: the block is closed by
+// fixed solid layers (its free surface treated as a wall, section 2), V0 = area / N, eq. (2.16)
+// with the scene's kernel and h/dx, until T / (N beta) < the block's threshold. Returns V0.
+double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<2>>& x) {
+  using namespace packing;
+  std::vector<Piece> path;
+  if (b.shape == FluidBlock::Shape::circle) {
+    const Vec2 c(b.center[0], b.center[1]), p = c + Vec2(b.radius, 0.0);
+    path.push_back(arc(p, p, c, true));
+  } else {
+    const Vec2 lo(b.lower[0], b.lower[1]), hi(b.upper[0], b.upper[1]);
+    path = {segment(lo, {hi.x(), lo.y()}), segment({hi.x(), lo.y()}, hi),
+            segment(hi, {lo.x(), hi.y()}), segment({lo.x(), hi.y()}, lo)};
+  }
+  const Region region(path);
+  const double V0 = region.area() / static_cast<double>(x.size());
+  PackingParameters p;
+  p.kernel = scene.kernel, p.hOverDx = scene.hOverDx;
+  p.alpha = b.packingAlpha, p.maxIterations = b.packingMaxIterations;
+  const int layers = static_cast<int>(std::ceil(2.0 * scene.hOverDx - 1e-9));
+  ParticlePacking packing(x, solidLayers(region, scene.dx, layers).position, V0, scene.dx, p);
+  // From rest T = 0: the test applies from the first iteration on.
+  while (packing.iteration() < p.maxIterations &&
+         (packing.iteration() == 0 || packing.record().kineticMean >= b.packingStop))
+    packing.step();
+  x = packing.positions();
+  return V0;
+}
+
+// Q_max of initial_pressure = "stretching" (Scene.hpp): the largest (x - c)^T G G (x - c) over
+// the block.
+template <int D>
+double stretchingQmax(const FluidBlock& b, const Eigen::Matrix<double, D, D>& GG, const Vec<D>& c) {
+  const Eigen::Matrix<double, D, D> S = 0.5 * (GG + GG.transpose());
+  if (b.shape == FluidBlock::Shape::circle) {
+    const double lmax =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>>(S).eigenvalues().maxCoeff();
+    return b.radius * b.radius * std::max(0.0, lmax);
+  }
+  double q = 0.0;  // the centre
+  for (int corner = 0; corner < (1 << D); ++corner) {
+    Vec<D> d;
+    for (int a = 0; a < D; ++a) d[a] = ((corner >> a) & 1 ? b.upper[a] : b.lower[a]) - c[a];
+    q = std::max(q, d.dot(S * d));
+  }
+  return q;
+}
+
+}  // namespace
 
 template <int D>
 Particles<D> latticeParticles(const Scene& scene) {
@@ -14,43 +102,37 @@ Particles<D> latticeParticles(const Scene& scene) {
   for (double c : scene.bodyAcceleration) g += c * c;
   g = std::sqrt(g);
   for (const FluidBlock& b : scene.fluids) {
-    const bool circle = b.shape == FluidBlock::Shape::circle;
-    Vec<D> lo, hi;
-    std::array<long, D> count;
-    for (int a = 0; a < D; ++a) {
-      lo[a] = circle ? b.center[a] - b.radius : b.lower[a];
-      hi[a] = circle ? b.center[a] + b.radius : b.upper[a];
-      count[a] = std::lround((hi[a] - lo[a]) / dx);
-      if (circle) lo[a] = b.center[a] - 0.5 * dx * count[a];  // lattice symmetric about the centre
-    }
-    std::array<long, D> idx{};
+    std::vector<Vec<D>> nodes = latticeNodes<D>(b, dx);
+    double volume = std::pow(dx, D);
+    if constexpr (D == 2)
+      if (b.packed && !nodes.empty()) volume = packBlock(b, scene, nodes);
+    Eigen::Matrix<double, D, D> G = Eigen::Matrix<double, D, D>::Zero();
+    Vec<D> c = Vec<D>::Zero();
+    if (!b.velocityGradient.empty())
+      for (int r = 0; r < D; ++r) {
+        c[r] = b.gradientCenter[r];
+        for (int k = 0; k < D; ++k) G(r, k) = b.velocityGradient[r * D + k];
+      }
+    const Eigen::Matrix<double, D, D> GG = G * G;
+    const double Qmax = b.stretching ? stretchingQmax<D>(b, GG, c) : 0.0;
     const Phase& ph = scene.phases[b.phase];
-    for (;;) {
-      Vec<D> x;
-      for (int a = 0; a < D; ++a) x[a] = lo[a] + (idx[a] + 0.5) * dx;
-      bool inside = true;
-      if (circle) {
-        double d2 = 0;
-        for (int a = 0; a < D; ++a) d2 += (x[a] - b.center[a]) * (x[a] - b.center[a]);
-        inside = d2 < b.radius * b.radius;
+    for (const Vec<D>& x : nodes) {
+      double rho = ph.rho0;
+      if (b.hydrostatic)
+        rho = TaitEquationOfState::density(ph.p0 + ph.rho0 * g * (b.surface - x[D - 1]), ph);
+      if (b.stretching) {  // Scene.hpp: -grad p / rho0 = G G (x - c), p = p0 at Q = Q_max
+        const Vec<D> d = x - c;
+        rho = TaitEquationOfState::density(ph.p0 + 0.5 * ph.rho0 * (Qmax - d.dot(GG * d)), ph);
       }
-      if (inside) {
-        double rho = ph.rho0;
-        if (b.hydrostatic)
-          rho = TaitEquationOfState::density(ph.p0 + ph.rho0 * g * (b.surface - x[D - 1]), ph);
-        out.r.push_back(x);
-        Vec<D> v;
-        for (int a = 0; a < D; ++a) v[a] = b.velocity[a];
-        out.v.push_back(v);
-        out.rho.push_back(rho);
-        out.m.push_back(rho * std::pow(dx, D));
-        out.h.push_back(scene.h0());
-        out.p.push_back(TaitEquationOfState::pressure(rho, ph));
-        out.phase.push_back(b.phase);
-      }
-      int a = 0;
-      while (a < D && ++idx[a] >= count[a]) idx[a++] = 0;
-      if (a == D) break;
+      out.r.push_back(x);
+      Vec<D> v = G * (x - c);
+      for (int a = 0; a < D; ++a) v[a] += b.velocity[a];
+      out.v.push_back(v);
+      out.rho.push_back(rho);
+      out.m.push_back(rho * volume);
+      out.h.push_back(scene.h0());
+      out.p.push_back(TaitEquationOfState::pressure(rho, ph));
+      out.phase.push_back(b.phase);
     }
   }
   return out;

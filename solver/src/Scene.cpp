@@ -1,10 +1,12 @@
 #include "sph/Scene.hpp"
 
+#include <toml++/toml.h>
+
+#include <Eigen/Dense>
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 namespace sph {
 
@@ -111,6 +113,33 @@ class Table {
       if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
       if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
       out.push_back(*v);
+    }
+    return out;
+  }
+  // A size x size matrix written as an array of rows, returned row-major.
+  std::vector<double> matrix(const std::string& key, int size) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) fail(key, "missing value (an array of " + std::to_string(size) + " rows)");
+    const toml::array* a = n->as_array();
+    const std::string shape = std::to_string(size) + " x " + std::to_string(size);
+    if (!a || static_cast<int>(a->size()) != size)
+      fail(key, "expected a " + shape + " matrix written as " + std::to_string(size) +
+                    " rows, e.g. [[1.0, 0.0], [0.0, -1.0]]");
+    std::vector<double> out;
+    for (std::size_t r = 0; r < a->size(); ++r) {
+      const toml::array* row = (*a)[r].as_array();
+      if (!row || static_cast<int>(row->size()) != size)
+        fail(key, "row " + std::to_string(r) + " must be an array of " + std::to_string(size) +
+                      " numbers (a " + shape + " matrix)");
+      for (const auto& e : *row) {
+        auto v = e.value<double>();
+        const std::string entry =
+            "entry [" + std::to_string(r) + "][" + std::to_string(out.size() % size) + "]";
+        if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
+        if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
+        out.push_back(*v);
+      }
     }
     return out;
   }
@@ -266,6 +295,25 @@ bool overlap(const FluidBlock& a, const FluidBlock& b, int D) {
   return true;
 }
 
+// initial_pressure = "stretching" solves -grad p / rho0 = G G (x - c): a pressure exists only
+// when G G is symmetric (curl-free right-hand side). Round-off allowance: 1e-12 of |G|^2.
+void checkStretchingPressure(Table& t, const std::vector<double>& G, int D) {
+  double scale = 0.0, asym = 0.0;
+  for (double g : G) scale += g * g;
+  auto GG = [&](int r, int c) {
+    double v = 0.0;
+    for (int k = 0; k < D; ++k) v += G[r * D + k] * G[k * D + c];
+    return v;
+  };
+  for (int r = 0; r < D; ++r)
+    for (int c = 0; c < D; ++c) asym = std::max(asym, std::abs(GG(r, c) - GG(c, r)));
+  if (asym > 1e-12 * scale)
+    t.fail("velocity_gradient",
+           "G G is not symmetric, so no pressure gives -grad p / rho0 = G G (x - c), as "
+           "initial_pressure = \"stretching\" needs (asymmetry " +
+               std::to_string(asym) + ")");
+}
+
 void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
   const int D = s.dimension;
   if (fluids.empty()) top.fail("fluid", "missing: at least one [[fluid]] block");
@@ -286,14 +334,44 @@ void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
     }
     b.phase = phaseIndex(t, s);
     b.velocity = t.vector("velocity", D, std::vector<double>(D, 0.0));
+    std::vector<double> lo, hi;
+    bounds(b, D, lo, hi);
+    if (t.has("velocity_gradient")) {
+      b.velocityGradient = t.matrix("velocity_gradient", D);
+      b.gradientCenter.resize(D);
+      for (int a = 0; a < D; ++a) b.gradientCenter[a] = 0.5 * (lo[a] + hi[a]);
+    }
     const std::string pressure = t.string("initial_pressure", "zero");
     if (pressure == "hydrostatic") {
       b.hydrostatic = true;
+    } else if (pressure == "stretching") {
+      b.stretching = true;
+      if (b.velocityGradient.empty())
+        t.fail("initial_pressure",
+               "\"stretching\" is the pressure of a linear velocity field: "
+               "it needs 'velocity_gradient'");
+      checkStretchingPressure(t, b.velocityGradient, D);
     } else if (pressure != "zero") {
-      t.fail("initial_pressure", "expected \"zero\" or \"hydrostatic\", got '" + pressure + "'");
+      t.fail("initial_pressure",
+             "expected \"zero\", \"hydrostatic\" or \"stretching\", got '" + pressure + "'");
     }
-    std::vector<double> lo, hi;
-    bounds(b, D, lo, hi);
+    const std::string start = t.string("initial", "lattice");
+    if (start == "packed") {
+      b.packed = true;
+      if (D != 2) t.fail("initial", "\"packed\" (Colagrossi et al. 2012 packing) is 2-D only");
+    } else if (start != "lattice") {
+      t.fail("initial", "expected \"lattice\" or \"packed\", got '" + start + "'");
+    }
+    if (t.has("packing")) {
+      Table pk = t.sub("packing");
+      if (!b.packed) t.fail("packing", "packing parameters need initial = \"packed\"");
+      b.packingAlpha = pk.nonNegative("alpha", b.packingAlpha);
+      b.packingMaxIterations =
+          static_cast<int>(pk.integer("max_iterations", b.packingMaxIterations));
+      if (b.packingMaxIterations < 0) pk.fail("max_iterations", "must not be negative");
+      b.packingStop = pk.positive("stop_kinetic_energy", b.packingStop);
+      pk.rejectUnknown();
+    }
     b.surface = t.number("surface", hi[D - 1]);
     for (int a = 0; a < D; ++a) {
       const bool below = lo[a] < s.lower[a] - 1e-12;
@@ -361,7 +439,16 @@ void warnOnLowSoundSpeed(Scene& s) {
     bottom = std::min(bottom, s.lower[D - 1]);
     double v2 = 0;
     for (double c : b.velocity) v2 += c * c;
-    vmax = std::max(vmax, std::sqrt(v2));
+    // A linear field adds at most |G|_2 times the largest distance from its centre.
+    double spread = 0.0;
+    if (!b.velocityGradient.empty()) {
+      const Eigen::Map<const Eigen::MatrixXd> G(b.velocityGradient.data(), D, D);
+      double reach2 = 0.0;
+      for (int a = 0; a < D; ++a) reach2 += 0.25 * (hi[a] - lo[a]) * (hi[a] - lo[a]);
+      if (b.shape == FluidBlock::Shape::circle) reach2 = b.radius * b.radius;
+      spread = Eigen::JacobiSVD<Eigen::MatrixXd>(G).singularValues()(0) * std::sqrt(reach2);
+    }
+    vmax = std::max(vmax, std::sqrt(v2) + spread);
   }
   const double expected = std::max(vmax, std::sqrt(2 * g * (top - bottom)));
   for (const auto& p : s.phases)

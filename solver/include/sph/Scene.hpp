@@ -25,8 +25,25 @@ struct FluidBlock {
   double radius = 0.0;
   int phase = 0;
   std::vector<double> velocity;
+  // Linear velocity field about the block's centre c (circle: its centre; rectangle: the
+  // midpoint): v = velocity + G (x - c), G row-major D x D; empty: none. Monaghan's (1994)
+  // elliptical drop is G = [[A0, 0], [0, -A0]].
+  std::vector<double> velocityGradient;
+  std::vector<double> gradientCenter;  // c
   bool hydrostatic = false;  // start at p = rho0 |g| (surface - y), density from the inverse EOS
+  // Start at the pressure that keeps v = G (x - c) linear at t = 0 (dG/dt = 0 there):
+  // -grad p / rho0 = G G (x - c), so p = p0 + rho0/2 (Q_max - Q(x)), Q = (x - c)^T G G (x - c),
+  // which needs G G symmetric; Q_max is Q's largest value over the block (circle:
+  // R^2 max(0, lambda_max(G G)); rectangle: over its corners and centre), so p = p0 there.
+  bool stretching = false;
   double surface = 0.0;      // free-surface height for the hydrostatic start (default: block top)
+  // Where the particles start: on the Cartesian lattice, or packed (Colagrossi et al. 2012,
+  // eq. 2.16, 2-D only) inside the block closed by fixed solid layers along its whole boundary,
+  // with the scene's kernel and h/dx; then m = rho V0, V0 = block area / N.
+  bool packed = false;
+  double packingAlpha = 2e-3;  // eq. (2.15)
+  int packingMaxIterations = 10000;
+  double packingStop = 1e-8;  // stop when T / (N beta) falls below (per particle)
 };
 
 struct Probe {

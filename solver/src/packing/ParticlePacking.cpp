@@ -1,6 +1,7 @@
 #include "sph/packing/ParticlePacking.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "sph/CellList.hpp"
 
@@ -21,11 +22,51 @@ ParticlePacking::ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> soli
   evaluate();
 }
 
+ParticlePacking::ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0,
+                                 double dx, const PackingParameters& parameters,
+                                 const PeriodicBox& box)
+    : ParticlePacking(std::vector<Vec2>{}, std::move(solid), V0, dx, parameters) {
+  // Delegated with no fluid so that the first evaluation below already sees the images.
+  const double support = 2.0 * h_;  // lambda h, lambda = 2 for every kernel here
+  for (int a = 0; a < 2; ++a)
+    if (!(box.hi[a] - box.lo[a] > 2.0 * support))
+      throw std::invalid_argument("periodic box narrower than twice the kernel support");
+  periodic_ = true;
+  box_ = box;
+  x_ = std::move(fluid);
+  u_.assign(x_.size(), Vec2::Zero());
+  wrap();
+  evaluate();
+}
+
+void ParticlePacking::wrap() {
+  for (Vec2& x : x_)
+    for (int a = 0; a < 2; ++a) {
+      const double L = box_.hi[a] - box_.lo[a];
+      x[a] -= L * std::floor((x[a] - box_.lo[a]) / L);
+    }
+}
+
 void ParticlePacking::evaluate() {
   const std::size_t nf = x_.size();
-  all_.resize(nf + solid_.size());
-  std::copy(x_.begin(), x_.end(), all_.begin());
-  std::copy(solid_.begin(), solid_.end(), all_.begin() + static_cast<std::ptrdiff_t>(nf));
+  all_.assign(x_.begin(), x_.end());
+  if (periodic_) {
+    // Images of the fluid particles within the kernel support of the box, shifted by the sides:
+    // they act as fluid particles (the same Gamma, and the fluid half of eq. B.34).
+    const double support = 2.0 * h_;
+    const Vec2 L = box_.hi - box_.lo;
+    for (std::size_t i = 0; i < nf; ++i)
+      for (int sx = -1; sx <= 1; ++sx)
+        for (int sy = -1; sy <= 1; ++sy) {
+          if (sx == 0 && sy == 0) continue;
+          const Vec2 y = x_[i] + Vec2(sx * L.x(), sy * L.y());
+          if (y.x() > box_.lo.x() - support && y.x() < box_.hi.x() + support &&
+              y.y() > box_.lo.y() - support && y.y() < box_.hi.y() + support)
+            all_.push_back(y);
+        }
+  }
+  const std::size_t nFluidLike = all_.size();
+  all_.insert(all_.end(), solid_.begin(), solid_.end());
   gradGamma_.assign(nf, Vec2::Zero());
   gamma_.assign(nf, 0.0);
   potentialTerm_.assign(nf, 0.0);
@@ -52,7 +93,7 @@ void ParticlePacking::evaluate() {
             if (r2 >= radius2) continue;
             const double r = std::sqrt(r2);
             const double W_ij = K::template W<2>(r, h);
-            (static_cast<std::size_t>(j) < nf ? sumFluid : sumSolid) += W_ij;
+            (static_cast<std::size_t>(j) < nFluidLike ? sumFluid : sumSolid) += W_ij;
             // grad_i W_ij = dW/dr r_ij / r; the self term (r = 0) has no direction.
             if (r > 0.0) grad += (K::template dWdr<2>(r, h) / r) * r_ij;
           }
@@ -79,6 +120,7 @@ void ParticlePacking::step() {
     u_[i] = damp * u_[i] - half * beta * gradGamma_[i];
     x_[i] += dt_ * u_[i];
   }
+  if (periodic_) wrap();
   evaluate();
   for (std::size_t i = 0; i < n; ++i) u_[i] = damp * (u_[i] - half * beta * gradGamma_[i]);
   ++iteration_;

@@ -41,11 +41,22 @@ struct PackingRecord {
   double maxGradGamma = 0.0;  // max_i |grad Gamma_i| [1/m]
 };
 
+// A periodic box [lo, hi) in both axes (Table 1 of the paper studies lattices that fill the
+// plane): a particle sees the images of every fluid particle shifted by the box sides, and is
+// wrapped back into the box after each drift. The box must be wider than twice the kernel support.
+struct PeriodicBox {
+  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+};
+
 class ParticlePacking {
  public:
   // `fluid` moves, `solid` stays; every particle has volume V0; h = hOverDx dx.
   ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0, double dx,
                   const PackingParameters& parameters);
+  // The same on a periodic box (solid may be empty); throws std::invalid_argument when a side is
+  // not wider than 2 lambda h.
+  ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0, double dx,
+                  const PackingParameters& parameters, const PeriodicBox& box);
 
   void step();  // one iteration of eq. (2.16)
   // Steps until T/beta < stopKineticEnergy or maxIterations; `observe` sees every record,
@@ -68,8 +79,11 @@ class ParticlePacking {
 
  private:
   void evaluate();  // Gamma, grad Gamma and V at the current positions
+  void wrap();      // periodic box: positions back into [lo, hi)
 
   PackingParameters parameters_;
+  bool periodic_ = false;
+  PeriodicBox box_;
   std::vector<Vec2> x_, u_, solid_, all_;
   std::vector<Vec2> gradGamma_;
   std::vector<double> gamma_, potentialTerm_;

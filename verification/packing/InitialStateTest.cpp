@@ -1,0 +1,132 @@
+// Scene support for the elliptical drop (issue 6): a linear initial velocity field
+// (velocity_gradient), its pressure (initial_pressure = "stretching") and a packed start
+// (initial = "packed"), with key-named errors for bad input (STYLE.md section 6).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "Results.hpp"
+#include "sph/InitialParticles.hpp"
+#include "sph/Scene.hpp"
+
+namespace sph {
+namespace {
+
+std::string dropText(const std::string& packed = "") {
+  std::ifstream in(std::string(SPH_SOURCE_DIR) + "/validation/packing/elliptical_drop" + packed +
+                   ".toml");
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "the scene no longer contains '" << from << "'";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// parseScene must throw a SceneError naming the key and the problem.
+void expectRejected(const std::string& text, const std::string& key, const std::string& problem) {
+  try {
+    parseScene(text, "drop.toml");
+    ADD_FAILURE() << "accepted; expected an error on '" << key << "'";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("drop.toml"), std::string::npos) << m;
+    EXPECT_NE(m.find("'" + key + "'"), std::string::npos) << "key not named: " << m;
+    EXPECT_NE(m.find(problem), std::string::npos) << "problem not named: " << m;
+  }
+}
+
+TEST(InitialState, EllipticalDropVelocityAndPressure) {
+  // Colagrossi et al. 2012 eqs. (3.19)-(3.20): u = A0 x, v = -A0 y, p = rho0 A0^2 (R^2 - r^2)/2.
+  // The density comes from the inverse Tait EOS and the pressure back from it: round-off
+  // ~1e-16 K (rho/rho0)^7 with K = rho0 c0^2/7 = 2.8e8 Pa, against p(0) = 5e6 Pa: tolerance 1e-9
+  // of p(0).
+  const Scene s = parseScene(dropText(), "drop.toml");
+  const Particles<2> p = latticeParticles<2>(s);
+  const double A0 = 100.0, R = 1.0, rho0 = 1000.0, pc = 0.5 * rho0 * A0 * A0 * R * R;
+  double dv = 0.0, dp = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec<2>& x = p.r[i];
+    dv = std::max(dv, (p.v[i] - Vec<2>(A0 * x.x(), -A0 * x.y())).norm());
+    dp = std::max(dp, std::abs(p.p[i] - 0.5 * rho0 * A0 * A0 * (R * R - x.squaredNorm())));
+  }
+  verification::Results r;
+  EXPECT_TRUE(r.check("max |v - (A0 x, -A0 y)| / (A0 R)", dv / (A0 * R), "<=", 1e-14,
+                      "eq. (3.19), exact up to round-off"));
+  EXPECT_TRUE(r.check("max |p - rho0 A0^2 (R^2 - r^2)/2| / p(0)", dp / pc, "<=", 1e-9,
+                      "eq. (3.20); EOS round trip, see test"));
+}
+
+TEST(InitialState, RotationGradientGivesCentrifugalPressure) {
+  // G = [[0, w], [-w, 0]] (rigid rotation): G G = -w^2 I, so -grad p / rho0 = -w^2 (x - c) and
+  // p = p0 + rho0 w^2 |x - c|^2 / 2, lowest (p0) at the centre: Q_max = 0 (Scene.hpp).
+  std::string text =
+      replaced(dropText(), "[[100.0, 0.0], [0.0, -100.0]]", "[[0.0, 10.0], [-10.0, 0.0]]");
+  const Scene s = parseScene(text, "drop.toml");
+  const Particles<2> p = latticeParticles<2>(s);
+  const double w = 10.0, rho0 = 1000.0;
+  double dp = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    dp = std::max(dp, std::abs(p.p[i] - 0.5 * rho0 * w * w * p.r[i].squaredNorm()));
+  verification::Results r;
+  EXPECT_TRUE(r.check("rotation: max |p - rho0 w^2 r^2 / 2| / (rho0 w^2 R^2 / 2)",
+                      dp / (0.5 * rho0 * w * w), "<=", 1e-9, "derivation in test; EOS round trip"));
+}
+
+TEST(InitialState, PackedDropKeepsAreaAndStaysInside) {
+  // initial = "packed": V0 = pi R^2 / N (Colagrossi et al. 2012, section 2), so sum m/rho is the
+  // disc's area to round-off; the fixed solid layers keep every particle inside the circle.
+  std::string text = replaced(dropText("_packed"), "max_iterations = 4000", "max_iterations = 300");
+  text = replaced(text, "dx = 0.05", "dx = 0.1");
+  const Scene s = parseScene(text, "drop.toml");
+  const Particles<2> p = latticeParticles<2>(s);
+  double area = 0.0, rmax = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    area += p.m[i] / p.rho[i], rmax = std::max(rmax, p.r[i].norm());
+  verification::Results r;
+  EXPECT_TRUE(r.check("packed drop: |sum m/rho - pi R^2| / (pi R^2)",
+                      std::abs(area / std::numbers::pi - 1.0), "<=", 1e-12,
+                      "V0 = area / N, section 2; round-off"));
+  EXPECT_TRUE(r.check("packed drop: max |x| / R", rmax, "<", 1.0,
+                      "section 2: the fixed solid particles close the domain"));
+}
+
+TEST(InitialState, BadInputNamesTheKey) {
+  const std::string base = dropText();
+  const std::string G = "[[100.0, 0.0], [0.0, -100.0]]";
+  expectRejected(replaced(base, G, "[[100.0, 0.0]]"), "fluid[0].velocity_gradient",
+                 "expected a 2 x 2 matrix");
+  expectRejected(replaced(base, G, "[[100.0, 0.0], [0.0]]"), "fluid[0].velocity_gradient",
+                 "row 1 must be an array of 2 numbers");
+  expectRejected(replaced(base, G, "[[100.0, 0.0], [0.0, \"x\"]]"), "fluid[0].velocity_gradient",
+                 "entry [1][1] is a string");
+  // G = [[1, 1], [0, 0]]: G G = G, not symmetric: no pressure exists.
+  expectRejected(replaced(base, G, "[[1.0, 1.0], [0.0, 0.0]]"), "fluid[0].velocity_gradient",
+                 "G G is not symmetric");
+  expectRejected(replaced(base, "velocity_gradient = " + G, ""), "fluid[0].initial_pressure",
+                 "needs 'velocity_gradient'");
+  expectRejected(replaced(base, "\"stretching\"", "\"stretched\""), "fluid[0].initial_pressure",
+                 "expected \"zero\", \"hydrostatic\" or \"stretching\"");
+  expectRejected(replaced(base, "initial = \"lattice\"", "initial = \"random\""),
+                 "fluid[0].initial", "expected \"lattice\" or \"packed\"");
+  expectRejected(replaced(base, "[physics]", "[fluid.packing]\nalpha = 1e-3\n\n[physics]"),
+                 "fluid[0].packing", "need initial = \"packed\"");
+  const std::string packed = dropText("_packed");
+  expectRejected(replaced(packed, "alpha = 2e-3", "alpha = -1.0"), "fluid[0].packing.alpha",
+                 "must not be negative");
+  expectRejected(replaced(packed, "alpha = 2e-3", "alfa = 2e-3"), "fluid[0].packing.alfa",
+                 "unknown key");
+  expectRejected(replaced(packed, "max_iterations = 4000", "max_iterations = 1.5"),
+                 "fluid[0].packing.max_iterations", "must be a whole number");
+}
+
+}  // namespace
+}  // namespace sph
