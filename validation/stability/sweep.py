@@ -39,7 +39,7 @@ G, H = 9.81, 0.25
 KERNELS = ["quadratic", "cubic_spline", "wendland_c2"]
 # The paper's dam break: c0 = 24.4 m/s, beta = 1, h = 1.33 dx, CFL 0.25 (Morris et al. 1997).
 BASE = dict(c0=24.4, beta=1.0, variable_h="true", kernel="quadratic", dx=0.02, h_over_dx=1.33,
-            cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0)
+            cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0, initial="lattice")
 RHO_G_BOX = 1000.0 * G * 0.2  # hydrostatic pressure at the bottom of the closed box [Pa]
 IMPACT_SPEED = 2.0  # block_impact.toml.in [m/s]
 
@@ -70,6 +70,12 @@ def sweeps():
     out["variable_h_dam_break"] = ("dam_break", "variable h (0 off, 1 on)", "kernel",
                                    [(v, k, dict(variable_h="true" if v else "false", kernel=kern))
                                     for v in (0, 1) for k, kern in enumerate(KERNELS)], KERNELS)
+    # Cartesian against packed start (solver/SCENES.md, initial = "packed"). The tank at rest leaves its
+    # square lattice at t sqrt(g/H) ~ 5 (README); run it to t sqrt(g/H) = 20 = 3.2 s for H = 0.25 m.
+    out["initial_particles_hydrostatic_tank"] = (
+        "hydrostatic_tank", "initial particles (0 Cartesian lattice, 1 packed)", "kernel",
+        [(i, k, dict(initial=init, kernel=kern, end_time=3.2)) for i, init in enumerate(("lattice", "packed"))
+         for k, kern in enumerate(KERNELS)], KERNELS)
     out["tensile_instability_closed_box"] = (
         "closed_box", "p0 / (rho0 g H)   (p < 0 everywhere below -1)", "kernel",
         [(r, k, dict(p0=round(r * RHO_G_BOX, 3), kernel=kern, c0=20.0, beta=0.1, variable_h="false", dx=0.01,
