@@ -79,10 +79,18 @@ void row(LatticeKind kind, KernelKind kernel) {
                           "Appendix B; leapfrog O(dt^2) energy error, measured, see test"));
     else
       r.check(drift + " (quadratic kernel rearranging, min distance " + fmt(o.minDistance) +
-                  " dx; recorded)",
-              o.energyDrift, "<=", 0.1, "Appendix B; quadratic kernel: dW/dr(0) != 0, see test");
-    r.check("max_t max_i |x_i - x_i^lattice| / dx, " + tag + " (recorded)", o.maxDisplacement, "<",
-            0.1, "recorded beside G: 10x the dx/100 noise");
+                  " dx; recorded against max T itself)",
+              o.energyDrift, "<=", 1.0, "Appendix B; quadratic kernel: dW/dr(0) != 0, see test");
+    // A second reading of the same outcome: a stable lattice keeps every particle within 10x the
+    // noise (0.1 dx; measured at most 0.025 dx), an unstable one moves some particle further
+    // (measured at least 0.165 dx). Asserted, so that G and the displacement classify alike.
+    const std::string moved = "max_t max_i |x_i - x_i^lattice| / dx, " + tag;
+    if (o.unstable())
+      EXPECT_TRUE(r.check(moved + " (G: unstable)", o.maxDisplacement, ">=", 0.1,
+                          "criterion of LatticeStability.hpp; 10x the dx/100 noise"));
+    else
+      EXPECT_TRUE(r.check(moved + " (G: stable)", o.maxDisplacement, "<", 0.1,
+                          "criterion of LatticeStability.hpp; 10x the dx/100 noise"));
     if (wendland) {
       const bool paperUnstable = paperRow(kind)[c] == 'U';
       r.check("G, " + tag + ", against Colagrossi et al. 2012 Table 1: " +
@@ -90,12 +98,9 @@ void row(LatticeKind kind, KernelKind kernel) {
               o.growth, paperUnstable ? ">=" : "<", kGrowthUnstable,
               "Colagrossi et al. 2012 Table 1; criterion G >= 3 unstable (LatticeStability.hpp)");
     }
-    // The other reading of dx (V0 = dx^2 for every lattice): linear theory only, recorded.
+    // The other reading of dx (V0 = dx^2 for every lattice): linear theory only, printed.
     const CellOutcome v = lattice(kind, kernel, hdx, 0.0, Spacing::volume);
     volume += v.linear.lambdaMin >= -1e-10 * v.linear.lambdaMax ? 'S' : 'U';
-    r.check("lambda_min / lambda_max, V0 = dx^2 reading of dx, " + tag + " (recorded)",
-            v.linear.lambdaMin / v.linear.lambdaMax, ">=", -1e-10,
-            "Hessian of eq. (B.34); >= 0 stable");
   }
   std::printf("%s, %s (h/dx = 0.8 1.4 2.0 2.6 3.2): ours %s, Hessian %s, Hessian with V0 = dx^2 %s",
               std::string(name(kernel)).c_str(), std::string(name(kind)).c_str(), ours.c_str(),
