@@ -4,9 +4,11 @@
 //
 // Set-up (section 2.1.1): the lattice perturbed by noise of order dx/100, zeta = 0, and the
 // evolution followed to t (beta/V0)^(1/2) = 6200 (the time of the paper's Fig. 3 snapshots).
-// Ours differs in stated ways: (1) the lattice fills a periodic box (the paper bounds it by fixed
-// solid particles; periodicity removes the boundary's influence instead of keeping it far away,
-// and leaves only the rigid translations neutral, which a start from rest does not excite);
+// Two domains: (1a) a periodic box of about 20 dx (periodicity removes the boundary's influence
+// instead of keeping it far away, and leaves only the rigid translations neutral, which a start
+// from rest does not excite; the Hessian below applies to it exactly), and (1b) the paper's
+// set-up, a block of about 20 x 20 dx whose surroundings, the same lattice to a depth of
+// 2h + dx, are fixed solid particles (which also removes the neutral directions). Further:
 // (2) dx is the nearest-neighbour distance of each lattice, as the unit spacing of the paper's
 // Fig. 3 suggests (the paper does not define it; the alternative, V0 = dx^2 for all three, is
 // computed too); (3) the time step resolves the fastest mode: eq. (2.17) with CFL = 1 gives
@@ -53,11 +55,16 @@ struct CellOutcome {
 };
 
 enum class Spacing { nearestNeighbour, volume };  // dx: the lattice's spacing, or V0 = dx^2
+// periodic: our set-up; bounded: the paper's, a block of about 20 x 20 dx of the lattice whose
+// surroundings, the same lattice to a depth of 2h + dx, are fixed solid particles.
+enum class Domain { periodic, bounded };
 
 // One cell of the table: lattice `kind`, kernel, h/dx, run to t (beta/V0)^(1/2) = `span`.
-// dx = 1, beta = 1. With span = 0 only the linear theory is computed.
+// dx = 1, beta = 1. With span = 0 only the linear theory (always on the periodic lattice) is
+// computed.
 inline CellOutcome lattice(LatticeKind kind, KernelKind kernel, double hOverDx,
-                           double span = kPaperSpan, Spacing spacing = Spacing::nearestNeighbour) {
+                           double span = kPaperSpan, Spacing spacing = Spacing::nearestNeighbour,
+                           Domain domain = Domain::periodic) {
   const double dx = 1.0;
   const double a = spacing == Spacing::volume ? nearestNeighbour(kind, dx) : dx;
   // Side: 20 dx as the paper's Fig. 3 (-10 .. 10 dx), and wider than twice the support 2 h.
@@ -79,20 +86,36 @@ inline CellOutcome lattice(LatticeKind kind, KernelKind kernel, double hOverDx,
   // Noise of order dx/100: each coordinate uniform in [-dx/100, dx/100], fixed seed.
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> noise(-0.01 * dx, 0.01 * dx);
-  std::vector<Vec2> start = base.position;
+  std::vector<Vec2> reference = base.position, solid;  // the moving particles' lattice sites
+  PeriodicBox box = base.box;
+  if (domain == Domain::bounded) {
+    const double margin = 2.0 * hOverDx * dx + dx;
+    const PeriodicLattice big = periodicLattice(kind, a, 20.0 * dx + 2.0 * margin);
+    box = big.box;
+    reference.clear();
+    for (const Vec2& x : big.position) {
+      const bool inside = x.x() > margin && x.x() < big.box.hi.x() - margin && x.y() > margin &&
+                          x.y() < big.box.hi.y() - margin;
+      (inside ? reference : solid).push_back(x);
+    }
+    out.particles = reference.size();
+  }
+  const Vec2 Lm = box.hi - box.lo;  // for the minimum image (periodic) or harmless (bounded)
+  std::vector<Vec2> start = reference;
   for (Vec2& x : start) x += Vec2(noise(rng), noise(rng));
   // ParticlePacking's h = hOverDx times its dx argument.
-  ParticlePacking packing(start, {}, V0, dx, p, base.box);
+  ParticlePacking packing = domain == Domain::bounded ? ParticlePacking(start, solid, V0, dx, p)
+                                                      : ParticlePacking(start, {}, V0, dx, p, box);
 
   auto displacement = [&](std::size_t i) {  // minimum image of x_i - x_i^lattice
-    Vec2 d = packing.positions()[i] - base.position[i];
-    for (int a = 0; a < 2; ++a) d[a] -= L[a] * std::round(d[a] / L[a]);
+    Vec2 d = packing.positions()[i] - reference[i];
+    for (int a = 0; a < 2; ++a) d[a] -= Lm[a] * std::round(d[a] / Lm[a]);
     return d;
   };
   auto rms = [&] {
     double s = 0.0;
-    for (std::size_t i = 0; i < base.position.size(); ++i) s += displacement(i).squaredNorm();
-    return std::sqrt(s / static_cast<double>(base.position.size()));
+    for (std::size_t i = 0; i < reference.size(); ++i) s += displacement(i).squaredNorm();
+    return std::sqrt(s / static_cast<double>(reference.size()));
   };
   const double rms0 = rms();
   const PackingRecord r0 = packing.record();
@@ -105,11 +128,11 @@ inline CellOutcome lattice(LatticeKind kind, KernelKind kernel, double hOverDx,
     maxDrift = std::max(maxDrift, std::abs(r.kinetic + r.potential - E0));
     if (n % 20 == 0 || n == iterations) {
       maxRms = std::max(maxRms, rms());
-      for (std::size_t i = 0; i < base.position.size(); ++i) {
+      for (std::size_t i = 0; i < reference.size(); ++i) {
         out.maxDisplacement = std::max(out.maxDisplacement, displacement(i).norm() / dx);
         for (std::size_t j = 0; j < i; ++j) {
           Vec2 d = packing.positions()[i] - packing.positions()[j];
-          for (int a = 0; a < 2; ++a) d[a] -= L[a] * std::round(d[a] / L[a]);
+          for (int a = 0; a < 2; ++a) d[a] -= Lm[a] * std::round(d[a] / Lm[a]);
           minDistance = std::min(minDistance, d.norm() / dx);
         }
       }
