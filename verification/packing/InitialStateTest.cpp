@@ -162,9 +162,9 @@ TEST(InitialState, BadInputNamesTheKey) {
   expectRejected(replaced(base, "[physics]", "[fluid.packing]\nalpha = 1e-3\n\n[physics]"),
                  "fluid[0].packing", "need initial = \"packed\"");
   const std::string packed = dropText("_packed");
-  expectRejected(replaced(packed, "alpha = 2e-3", "alpha = -1.0"), "fluid[0].packing.alpha",
+  expectRejected(replaced(packed, "alpha = 5e-3", "alpha = -1.0"), "fluid[0].packing.alpha",
                  "must not be negative");
-  expectRejected(replaced(packed, "alpha = 2e-3", "alfa = 2e-3"), "fluid[0].packing.alfa",
+  expectRejected(replaced(packed, "alpha = 5e-3", "alfa = 5e-3"), "fluid[0].packing.alfa",
                  "unknown key");
   expectRejected(replaced(packed, "max_iterations = 4000", "max_iterations = 1.5"),
                  "fluid[0].packing.max_iterations", "must be a whole number");
