@@ -47,7 +47,8 @@ std::vector<Vec<D>> latticeNodes(const FluidBlock& b, double dx) {
 // Colagrossi et al. (2012) packing of a 2-D block from its lattice nodes: the block is closed by
 // fixed solid layers (its free surface treated as a wall, section 2), V0 = area / N, eq. (2.16)
 // with the scene's kernel and h/dx, until T / (N beta) < the block's threshold. Returns V0.
-double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<2>>& x) {
+double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<2>>& x,
+                 PackedBlock& report) {
   using namespace packing;
   std::vector<Piece> path;
   if (b.shape == FluidBlock::Shape::circle) {
@@ -66,9 +67,13 @@ double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<2>>& x
   const int layers = static_cast<int>(std::ceil(2.0 * scene.hOverDx - 1e-9));
   ParticlePacking packing(x, solidLayers(region, scene.dx, layers).position, V0, scene.dx, p);
   // From rest T = 0: the test applies from the first iteration on.
+  report.history.push_back(packing.record());
   while (packing.iteration() < p.maxIterations &&
-         (packing.iteration() == 0 || packing.record().kineticMean >= b.packingStop))
+         (packing.iteration() == 0 || report.history.back().kineticMean >= b.packingStop)) {
     packing.step();
+    report.history.push_back(packing.record());
+  }
+  report.converged = packing.iteration() > 0 && report.history.back().kineticMean < b.packingStop;
   x = packing.positions();
   return V0;
 }
@@ -95,17 +100,23 @@ double stretchingQmax(const FluidBlock& b, const Eigen::Matrix<double, D, D>& GG
 }  // namespace
 
 template <int D>
-Particles<D> latticeParticles(const Scene& scene) {
+Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* packed) {
   Particles<D> out;
   const double dx = scene.dx;
   double g = 0;
   for (double c : scene.bodyAcceleration) g += c * c;
   g = std::sqrt(g);
-  for (const FluidBlock& b : scene.fluids) {
+  for (std::size_t k = 0; k < scene.fluids.size(); ++k) {
+    const FluidBlock& b = scene.fluids[k];
     std::vector<Vec<D>> nodes = latticeNodes<D>(b, dx);
     double volume = std::pow(dx, D);
     if constexpr (D == 2)
-      if (b.packed && !nodes.empty()) volume = packBlock(b, scene, nodes);
+      if (b.packed && !nodes.empty()) {
+        PackedBlock report;
+        report.block = k;
+        volume = packBlock(b, scene, nodes, report);
+        if (packed) packed->push_back(std::move(report));
+      }
     Eigen::Matrix<double, D, D> G = Eigen::Matrix<double, D, D>::Zero();
     Vec<D> c = Vec<D>::Zero();
     if (!b.velocityGradient.empty())
@@ -138,8 +149,8 @@ Particles<D> latticeParticles(const Scene& scene) {
   return out;
 }
 
-template Particles<1> latticeParticles<1>(const Scene&);
-template Particles<2> latticeParticles<2>(const Scene&);
-template Particles<3> latticeParticles<3>(const Scene&);
+template Particles<1> latticeParticles<1>(const Scene&, std::vector<PackedBlock>*);
+template Particles<2> latticeParticles<2>(const Scene&, std::vector<PackedBlock>*);
+template Particles<3> latticeParticles<3>(const Scene&, std::vector<PackedBlock>*);
 
 }  // namespace sph

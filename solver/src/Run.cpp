@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "sph/Diagnostics.hpp"
+#include "sph/InitialParticles.hpp"
 #include "sph/RunFile.hpp"
 #include "sph/Simulation.hpp"
 
@@ -23,7 +24,8 @@ SnapshotFields fieldsOf(const Particles<D>& s) {
   const std::size_t n = s.size();
   f.position.assign(3 * n, 0.0), f.velocity.assign(3 * n, 0.0);
   for (std::size_t i = 0; i < n; ++i)
-    for (int a = 0; a < D; ++a) f.position[3 * i + a] = s.r[i][a], f.velocity[3 * i + a] = s.v[i][a];
+    for (int a = 0; a < D; ++a)
+      f.position[3 * i + a] = s.r[i][a], f.velocity[3 * i + a] = s.v[i][a];
   f.density = s.rho, f.pressure = s.p, f.h = s.h, f.mass = s.m;
   f.phase.assign(s.phase.begin(), s.phase.end());
   return f;
@@ -44,7 +46,10 @@ class Series {
       columns.push_back({n, {}, {}, {}});
     for (const auto& ph : scene.phases) columns.push_back({"volume_error_" + ph.name, {}, {}, {}});
     for (const auto& p : scene.probes) {
-      SeriesColumn c{"probe_" + p.name, {}, {{"type", p.type}, {"units", p.type == "pressure" ? "Pa" : "m"}}, {}};
+      SeriesColumn c{"probe_" + p.name,
+                     {},
+                     {{"type", p.type}, {"units", p.type == "pressure" ? "Pa" : "m"}},
+                     {}};
       if (!p.reference.empty()) c.text.push_back({"reference", p.reference});
       if (p.scaleLength > 0) c.numbers.push_back({"scale_length", p.scaleLength});
       if (p.scaleHeight > 0) c.numbers.push_back({"scale_height", p.scaleHeight});
@@ -54,8 +59,9 @@ class Series {
   }
   void record(double t, double dt, long step, int limiter, const Diagnostics& d) {
     if (volume0.empty()) volume0 = d.phaseVolume, total0 = d.volume;
-    std::vector<double> row{t, dt, double(step), double(limiter), d.kineticEnergy, d.maxSpeed,
-                            d.rhoMin, d.rhoMax, d.volume / total0 - 1.0};
+    std::vector<double> row{
+        t,          dt,       double(step), double(limiter),        d.kineticEnergy,
+        d.maxSpeed, d.rhoMin, d.rhoMax,     d.volume / total0 - 1.0};
     for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
       row.push_back(volume0[k] > 0 ? d.phaseVolume[k] / volume0[k] - 1.0 : 0.0);
     row.insert(row.end(), d.probes.begin(), d.probes.end());
@@ -69,11 +75,34 @@ class Series {
   double total0 = 0;
 };
 
+// /packing/block_<k>: the packing history of a block with initial = "packed" (issue 6), and a
+// warning when it stopped on max_iterations instead of the kinetic-energy criterion.
+void writePacking(RunFile& file, const Scene& scene, const PackedBlock& b) {
+  const std::string g = "/packing/block_" + std::to_string(b.block);
+  std::vector<double> it, kinetic, mean, grad;
+  for (const auto& r : b.history) {
+    it.push_back(r.iteration), kinetic.push_back(r.kinetic);
+    mean.push_back(r.kineticMean), grad.push_back(r.maxGradGamma);
+  }
+  file.array(g, "iteration", it), file.array(g, "kinetic", kinetic);
+  file.array(g, "kinetic_mean", mean), file.array(g, "max_grad_gamma", grad);
+  const FluidBlock& f = scene.fluids[b.block];
+  file.attribute("converged", std::int64_t(b.converged), g);
+  file.attribute("iterations", std::int64_t(b.history.empty() ? 0 : b.history.back().iteration), g);
+  file.attribute("stop_kinetic_energy", f.packingStop, g);
+  if (!b.converged && !b.history.empty())
+    std::cerr << scene.file << ": warning: the packing of fluid block " << b.block
+              << " stopped at max_iterations = " << f.packingMaxIterations
+              << " with T/(N beta) = " << b.history.back().kineticMean
+              << ", above stop_kinetic_energy = " << f.packingStop << "\n";
+}
+
 template <int D>
 int run(const Scene& scene, const RunOptions& opt) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
-  Simulation<D> sim(scene);
+  std::vector<PackedBlock> packed;
+  Simulation<D> sim(scene, latticeParticles<D>(scene, &packed));
   if (sim.particles().size() == 0) {
     std::cerr << scene.file << ": the fluid blocks hold no particles at dx = " << scene.dx << "\n";
     return exitBadInput;
@@ -96,6 +125,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("terms", join(sim.termNames()));
   file.attribute("status", std::string("running"));
   file.text("/scene", scene.text);
+  for (const PackedBlock& b : packed) writePacking(file, scene, b);
 
   Series series(scene);
   auto record = [&] {
@@ -182,9 +212,12 @@ int run(const Scene& scene, const RunOptions& opt) {
 int runScene(const Scene& scene, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
   switch (scene.dimension) {
-    case 1: return run<1>(scene, options);
-    case 2: return run<2>(scene, options);
-    default: return run<3>(scene, options);
+    case 1:
+      return run<1>(scene, options);
+    case 2:
+      return run<2>(scene, options);
+    default:
+      return run<3>(scene, options);
   }
 }
 

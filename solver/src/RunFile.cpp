@@ -18,7 +18,8 @@ void check(herr_t status, const std::string& what) {
 
 hid_t openGroup(hid_t file, const std::string& group) {
   if (group == "/") return H5Gopen2(file, "/", H5P_DEFAULT);
-  if (H5Lexists(file, group.c_str(), H5P_DEFAULT) > 0) return H5Gopen2(file, group.c_str(), H5P_DEFAULT);
+  if (H5Lexists(file, group.c_str(), H5P_DEFAULT) > 0)
+    return H5Gopen2(file, group.c_str(), H5P_DEFAULT);
   hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
   H5Pset_create_intermediate_group(lcpl, 1);
   hid_t g = H5Gcreate2(file, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
@@ -66,7 +67,8 @@ RunFile::~RunFile() {
   if (file_ >= 0) H5Fclose(file_);
 }
 
-void RunFile::attribute(const std::string& name, const std::string& value, const std::string& group) {
+void RunFile::attribute(const std::string& name, const std::string& value,
+                        const std::string& group) {
   hid_t t = stringType(value.size());
   writeAttribute(file_, group, name, t, value.c_str());
   H5Tclose(t);
@@ -84,6 +86,13 @@ void RunFile::text(const std::string& dataset, const std::string& value) {
   hid_t d = H5Dcreate2(file_, dataset.c_str(), t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   check(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()), dataset);
   H5Dclose(d), H5Sclose(space), H5Tclose(t);
+}
+
+void RunFile::array(const std::string& group, const std::string& name,
+                    const std::vector<double>& values) {
+  hid_t g = openGroup(file_, group);
+  writeArray(g, name, H5T_NATIVE_DOUBLE, values, 1);
+  H5Gclose(g);
 }
 
 void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
@@ -164,7 +173,9 @@ void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, 
   writeXdmf();
 }
 
-void RunFile::flush() { H5Fflush(file_, H5F_SCOPE_GLOBAL); }
+void RunFile::flush() {
+  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+}
 
 // XDMF 3 temporal collection of polyvertex grids pointing into the HDF5 file. Written to a
 // temporary file and renamed, so a reader never sees half of it.
@@ -178,11 +189,12 @@ void RunFile::writeXdmf() const {
     << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   auto item = [&](const Entry& e, const std::string& field, int cols, const char* type, int bytes) {
     x << "      <DataItem Dimensions=\"" << e.n << (cols > 1 ? " 3" : "") << "\" NumberType=\""
-      << type << "\" Precision=\"" << bytes << "\" Format=\"HDF\">" << file << ":" << e.group
-      << "/" << field << "</DataItem>\n";
+      << type << "\" Precision=\"" << bytes << "\" Format=\"HDF\">" << file << ":" << e.group << "/"
+      << field << "</DataItem>\n";
   };
   for (const Entry& e : snapshots_) {
-    x << "   <Grid Name=\"" << e.group.substr(e.group.rfind('/') + 1) << "\" GridType=\"Uniform\">\n"
+    x << "   <Grid Name=\"" << e.group.substr(e.group.rfind('/') + 1)
+      << "\" GridType=\"Uniform\">\n"
       << "    <Time Value=\"" << e.time << "\"/>\n"
       << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.n
       << "\" NodesPerElement=\"1\"/>\n    <Geometry GeometryType=\"XYZ\">\n";

@@ -83,6 +83,28 @@ TEST(FailureDetection, TimeStepCollapse) {
   expectFailure("fail_dt_collapse.toml", "fail_dt_collapse", "dt_collapse");
 }
 
+// A scene with initial = "packed" (issue 6) keeps the packing history in /packing/block_<k>: a
+// record per iteration from the start (iteration 0), and says when the packing stopped on
+// max_iterations rather than on its kinetic-energy criterion (here 40 iterations, criterion 1e-30).
+TEST(RunFile, KeepsThePackingHistory) {
+  const RunOutcome r = runScene("packed_tank.toml", "packed_tank");
+  ASSERT_EQ(r.result.exitCode, 0) << r.result.output;
+  EXPECT_NE(r.result.output.find("warning: the packing of fluid block 0 stopped at max_iterations"),
+            std::string::npos)
+      << r.result.output;
+  const std::string g = "/packing/block_0";
+  EXPECT_EQ(integerAttribute(r.file, g, "converged"), 0);
+  EXPECT_EQ(integerAttribute(r.file, g, "iterations"), 40);
+  const auto it = readDoubles(r.file, g + "/iteration");
+  const auto grad = readDoubles(r.file, g + "/max_grad_gamma");
+  ASSERT_EQ(it.size(), 41u);
+  ASSERT_EQ(readDoubles(r.file, g + "/kinetic").size(), 41u);
+  EXPECT_EQ(it.front(), 0.0);
+  EXPECT_EQ(it.back(), 40.0);
+  // The packing moves particles down the gradient of Gamma (eq. 2.16): it falls from the lattice.
+  EXPECT_LT(grad.back(), grad.front());
+}
+
 // An output directory that cannot be made (here: the path is an existing file) stops the run with
 // exit 4 (Run.hpp: exitOutputError) and a message naming the path, and the file is left as it was.
 TEST(OutputError, OutputPathIsAFile) {

@@ -5,12 +5,25 @@
 // al. (2012) algorithm instead, with m = rho V0, V0 = block area / N. Velocity: the block's
 // uniform velocity plus its linear field G (x - c); density from the block's initial pressure
 // (zero, hydrostatic or stretching; Scene.hpp) through the inverse equation of state.
+#include <cstddef>
+#include <vector>
+
 #include "sph/Particles.hpp"
 #include "sph/Scene.hpp"
+#include "sph/packing/ParticlePacking.hpp"
 
 namespace sph {
 
+// What the packing of one block did: a record per iteration (T/beta, max |grad Gamma|), and whether
+// T / (N beta) fell below the block's stop_kinetic_energy before max_iterations.
+struct PackedBlock {
+  std::size_t block = 0;  // index into Scene::fluids
+  bool converged = false;
+  std::vector<packing::PackingRecord> history;
+};
+
+// `packed`, when given, receives one entry per block with initial = "packed".
 template <int D>
-Particles<D> latticeParticles(const Scene& scene);
+Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* packed = nullptr);
 
 }  // namespace sph

@@ -11,9 +11,9 @@ namespace sph {
 
 struct SeriesColumn {
   std::string name;
-  std::vector<double> values;  // buffered until the next flush
-  std::vector<std::pair<std::string, std::string>> text;     // attributes, written once
-  std::vector<std::pair<std::string, double>> numbers;       // attributes, written once
+  std::vector<double> values;                             // buffered until the next flush
+  std::vector<std::pair<std::string, std::string>> text;  // attributes, written once
+  std::vector<std::pair<std::string, double>> numbers;    // attributes, written once
 };
 
 struct SnapshotFields {
@@ -33,6 +33,8 @@ class RunFile {
   void attribute(const std::string& name, double value, const std::string& group = "/");
   void attribute(const std::string& name, std::int64_t value, const std::string& group = "/");
   void text(const std::string& dataset, const std::string& value);
+  // A fixed 1-D dataset <group>/<name> (the group is made when missing).
+  void array(const std::string& group, const std::string& name, const std::vector<double>& values);
 
   // Appends the buffered values of each column to /series/<name> and empties the buffers.
   void appendSeries(std::vector<SeriesColumn>& columns);
