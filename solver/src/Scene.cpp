@@ -8,22 +8,31 @@
 #include <set>
 #include <sstream>
 
+#include "SceneTable.hpp"
+
 namespace sph {
 
 std::string_view name(KernelKind k) {
   switch (k) {
-    case KernelKind::quadratic: return "quadratic";
-    case KernelKind::cubic_spline: return "cubic_spline";
-    default: return "wendland_c2";
+    case KernelKind::quadratic:
+      return "quadratic";
+    case KernelKind::cubic_spline:
+      return "cubic_spline";
+    default:
+      return "wendland_c2";
   }
 }
 
 std::string_view name(FaceKind k) {
   switch (k) {
-    case FaceKind::open: return "open";
-    case FaceKind::free_slip: return "free_slip";
-    case FaceKind::no_slip: return "no_slip";
-    default: return "periodic";
+    case FaceKind::open:
+      return "open";
+    case FaceKind::free_slip:
+      return "free_slip";
+    case FaceKind::no_slip:
+      return "no_slip";
+    default:
+      return "periodic";
   }
 }
 
@@ -31,171 +40,7 @@ namespace {
 
 const char* axisName[3] = {"x", "y", "z"};
 
-// A view of one TOML table that knows its dotted path, reports errors against the file and the
-// key, and remembers which keys were read so that unknown (misspelt) keys are rejected.
-class Table {
- public:
-  Table(const toml::table& t, std::string path, const std::string& file)
-      : t_(t), path_(std::move(path)), file_(file) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw SceneError(file_ + ": key '" + full(key) + "': " + what);
-  }
-  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  bool has(const std::string& key) {
-    used_.insert(key);
-    return t_.contains(key);
-  }
-
-  double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) {
-      if (fallback) return *fallback;
-      fail(key, "missing value (a number)");
-    }
-    if (auto v = n->value<double>()) {
-      if (!std::isfinite(*v)) fail(key, "must be a finite number, got " + fmt(*v));
-      return *v;
-    }
-    fail(key, std::string("wrong type: expected a number, got ") + typeName(*n));
-  }
-  // A whole number (a TOML integer, or a float without a fractional part).
-  long integer(const std::string& key, std::optional<long> fallback = std::nullopt) {
-    const double v = number(key, fallback ? std::optional<double>(*fallback) : std::nullopt);
-    if (v != std::floor(v) || std::abs(v) > 1e9) fail(key, "must be a whole number, got " + fmt(v));
-    return static_cast<long>(v);
-  }
-  double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
-    const double v = number(key, fallback);
-    if (!(v > 0.0)) fail(key, "must be positive, got " + fmt(v));
-    return v;
-  }
-  double nonNegative(const std::string& key, std::optional<double> fallback = std::nullopt) {
-    const double v = number(key, fallback);
-    if (v < 0.0) fail(key, "must not be negative, got " + fmt(v));
-    return v;
-  }
-  std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) {
-      if (fallback) return *fallback;
-      fail(key, "missing value (a string)");
-    }
-    if (auto v = n->value<std::string>()) return *v;
-    fail(key, std::string("wrong type: expected a string, got ") + typeName(*n));
-  }
-  bool boolean(const std::string& key, bool fallback) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return fallback;
-    if (auto v = n->value<bool>()) return *v;
-    fail(key, std::string("wrong type: expected true or false, got ") + typeName(*n));
-  }
-  std::vector<double> vector(const std::string& key, int size,
-                             std::optional<std::vector<double>> fallback = std::nullopt) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) {
-      if (fallback) return *fallback;
-      fail(key, "missing value (an array of " + std::to_string(size) + " numbers)");
-    }
-    const toml::array* a = n->as_array();
-    if (!a) fail(key, std::string("wrong type: expected an array of numbers, got ") + typeName(*n));
-    if (static_cast<int>(a->size()) != size)
-      fail(key, "expected " + std::to_string(size) + " numbers (one per dimension), got " +
-                    std::to_string(a->size()));
-    std::vector<double> out;
-    for (const auto& e : *a) {
-      auto v = e.value<double>();
-      const std::string entry = "entry " + std::to_string(out.size());
-      if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
-      if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
-      out.push_back(*v);
-    }
-    return out;
-  }
-  // A size x size matrix written as an array of rows, returned row-major.
-  std::vector<double> matrix(const std::string& key, int size) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) fail(key, "missing value (an array of " + std::to_string(size) + " rows)");
-    const toml::array* a = n->as_array();
-    const std::string shape = std::to_string(size) + " x " + std::to_string(size);
-    if (!a || static_cast<int>(a->size()) != size)
-      fail(key, "expected a " + shape + " matrix written as " + std::to_string(size) +
-                    " rows, e.g. [[1.0, 0.0], [0.0, -1.0]]");
-    std::vector<double> out;
-    for (std::size_t r = 0; r < a->size(); ++r) {
-      const toml::array* row = (*a)[r].as_array();
-      if (!row || static_cast<int>(row->size()) != size)
-        fail(key, "row " + std::to_string(r) + " must be an array of " + std::to_string(size) +
-                      " numbers (a " + shape + " matrix)");
-      for (const auto& e : *row) {
-        auto v = e.value<double>();
-        const std::string entry =
-            "entry [" + std::to_string(r) + "][" + std::to_string(out.size() % size) + "]";
-        if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
-        if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
-        out.push_back(*v);
-      }
-    }
-    return out;
-  }
-  Table sub(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return Table(empty(), full(key), file_);
-    if (!n->is_table()) fail(key, std::string("wrong type: expected a table, got ") + typeName(*n));
-    return Table(*n->as_table(), full(key), file_);
-  }
-  std::vector<Table> array(const std::string& key) {
-    used_.insert(key);
-    std::vector<Table> out;
-    const toml::node* n = t_.get(key);
-    if (!n) return out;
-    const toml::array* a = n->as_array();
-    if (!a || !a->is_array_of_tables())
-      fail(key, "wrong type: expected an array of tables ([[" + full(key) + "]])");
-    for (std::size_t i = 0; i < a->size(); ++i)
-      out.emplace_back(*(*a)[i].as_table(), full(key) + "[" + std::to_string(i) + "]", file_);
-    return out;
-  }
-  // Call after reading a table: any key never asked for is unknown.
-  void rejectUnknown() const {
-    for (const auto& [k, v] : t_)
-      if (!used_.count(std::string(k.str()))) fail(std::string(k.str()), "unknown key");
-  }
-
- private:
-  static const toml::table& empty() {
-    static const toml::table e;
-    return e;
-  }
-  static const char* typeName(const toml::node& n) {
-    switch (n.type()) {
-      case toml::node_type::string: return "a string";
-      case toml::node_type::integer: return "an integer";
-      case toml::node_type::floating_point: return "a number";
-      case toml::node_type::boolean: return "a boolean";
-      case toml::node_type::array: return "an array";
-      case toml::node_type::table: return "a table";
-      default: return "a date or time";
-    }
-  }
-  static std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
-  const toml::table& t_;
-  std::string path_;
-  const std::string& file_;
-  std::set<std::string> used_;
-};
-
-FaceKind faceKind(Table& t, const std::string& key, const std::string& value) {
+FaceKind faceKind(SceneTable& t, const std::string& key, const std::string& value) {
   if (value == "open") return FaceKind::open;
   if (value == "free_slip") return FaceKind::free_slip;
   if (value == "no_slip") return FaceKind::no_slip;
@@ -203,14 +48,14 @@ FaceKind faceKind(Table& t, const std::string& key, const std::string& value) {
   t.fail(key, "unknown boundary '" + value + "' (expected open, free_slip, no_slip or periodic)");
 }
 
-void readDomain(Table domain, Scene& s) {
+void readDomain(SceneTable domain, Scene& s) {
   const int D = s.dimension;
   s.lower = domain.vector("lower", D);
   s.upper = domain.vector("upper", D);
   for (int a = 0; a < D; ++a)
     if (!(s.upper[a] > s.lower[a]))
       domain.fail("upper", std::string("must exceed 'lower' along ") + axisName[a]);
-  Table velocity = domain.sub("wall_velocity");
+  SceneTable velocity = domain.sub("wall_velocity");
   for (int a = 0; a < D; ++a) {
     const std::string axis = axisName[a];
     std::vector<std::string> kinds(2);
@@ -234,7 +79,7 @@ void readDomain(Table domain, Scene& s) {
   domain.rejectUnknown();
 }
 
-void readPhases(std::vector<Table> phases, Scene& s, Table& top) {
+void readPhases(std::vector<SceneTable> phases, Scene& s, SceneTable& top) {
   if (phases.empty()) top.fail("phase", "missing: at least one [[phase]] table");
   std::set<std::string> names;
   for (auto& t : phases) {
@@ -251,8 +96,9 @@ void readPhases(std::vector<Table> phases, Scene& s, Table& top) {
   }
 }
 
-int phaseIndex(Table& t, const Scene& s) {
-  const std::string name = t.string("phase", s.phases.size() == 1 ? s.phases[0].name : std::string());
+int phaseIndex(SceneTable& t, const Scene& s) {
+  const std::string name =
+      t.string("phase", s.phases.size() == 1 ? s.phases[0].name : std::string());
   for (std::size_t i = 0; i < s.phases.size(); ++i)
     if (s.phases[i].name == name) return static_cast<int>(i);
   t.fail("phase", "no [[phase]] named '" + name + "'");
@@ -297,7 +143,7 @@ bool overlap(const FluidBlock& a, const FluidBlock& b, int D) {
 
 // initial_pressure = "stretching" solves -grad p / rho0 = G G (x - c): a pressure exists only
 // when G G is symmetric (curl-free right-hand side). Round-off allowance: 1e-12 of |G|^2.
-void checkStretchingPressure(Table& t, const std::vector<double>& G, int D) {
+void checkStretchingPressure(SceneTable& t, const std::vector<double>& G, int D) {
   double scale = 0.0, asym = 0.0;
   for (double g : G) scale += g * g;
   auto GG = [&](int r, int c) {
@@ -314,7 +160,7 @@ void checkStretchingPressure(Table& t, const std::vector<double>& G, int D) {
                std::to_string(asym) + ")");
 }
 
-void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
+void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
   const int D = s.dimension;
   if (fluids.empty()) top.fail("fluid", "missing: at least one [[fluid]] block");
   for (auto& t : fluids) {
@@ -363,7 +209,7 @@ void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
       t.fail("initial", "expected \"lattice\" or \"packed\", got '" + start + "'");
     }
     if (t.has("packing")) {
-      Table pk = t.sub("packing");
+      SceneTable pk = t.sub("packing");
       if (!b.packed) t.fail("packing", "packing parameters need initial = \"packed\"");
       b.packingAlpha = pk.nonNegative("alpha", b.packingAlpha);
       b.packingMaxIterations =
@@ -393,14 +239,14 @@ void readFluids(std::vector<Table> fluids, Scene& s, Table& top) {
   }
 }
 
-KernelKind kernelKind(Table& t, const std::string& v) {
+KernelKind kernelKind(SceneTable& t, const std::string& v) {
   if (v == "quadratic") return KernelKind::quadratic;
   if (v == "cubic_spline") return KernelKind::cubic_spline;
   if (v == "wendland_c2") return KernelKind::wendland_c2;
   t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
 }
 
-void readProbes(std::vector<Table> probes, Scene& s) {
+void readProbes(std::vector<SceneTable> probes, Scene& s) {
   std::set<std::string> names;
   for (auto& t : probes) {
     Probe p;
@@ -475,7 +321,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   Scene s;
   s.file = file;
   s.text = text;
-  Table top(root, "", s.file);
+  SceneTable top(root, "", s.file);
   s.name = top.string("name");
   top.string("description", "");
   const double dimension = top.number("dimension");  // 2.5 must not pass as 2
@@ -487,7 +333,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   readPhases(top.array("phase"), s, top);
   readFluids(top.array("fluid"), s, top);
 
-  Table physics = top.sub("physics");
+  SceneTable physics = top.sub("physics");
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
@@ -497,7 +343,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.terms.variableH = physics.boolean("variable_h", false);
   physics.rejectUnknown();
 
-  Table numerics = top.sub("numerics");
+  SceneTable numerics = top.sub("numerics");
   s.kernel = kernelKind(numerics, numerics.string("kernel", "quadratic"));
   s.dx = numerics.positive("dx");
   s.hOverDx = numerics.positive("h_over_dx", 1.33);
@@ -514,7 +360,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   for (int a = 0; a < D; ++a)
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
 
-  Table output = top.sub("output");
+  SceneTable output = top.sub("output");
   s.snapshotInterval = output.nonNegative("snapshot_interval", 0.0);
   const long seriesEvery = output.integer("series_every", 1);
   if (seriesEvery < 1) output.fail("series_every", "must be a positive whole number");

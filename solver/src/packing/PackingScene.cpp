@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 
+#include "../SceneTable.hpp"
 #include "sph/Run.hpp"
 #include "sph/RunFile.hpp"
 
@@ -20,112 +21,13 @@ namespace sph::packing {
 
 namespace {
 
-// A view of one TOML table that names the file and the dotted key in every error and rejects
-// keys it was never asked for (misspellings).
-class Table {
- public:
-  Table(const toml::table& t, std::string path, const std::string& file)
-      : t_(t), path_(std::move(path)), file_(file) {}
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw SceneError(file_ + ": key '" + full(key) + "': " + what);
-  }
-  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  bool has(const std::string& key) {
-    used_.insert(key);
-    return t_.contains(key);
-  }
-  double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) {
-      if (fallback) return *fallback;
-      fail(key, "missing value (a number)");
-    }
-    auto v = n->value<double>();
-    if (!v) fail(key, "wrong type: expected a number");
-    if (!std::isfinite(*v)) fail(key, "must be a finite number");
-    return *v;
-  }
-  double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
-    const double v = number(key, fallback);
-    if (!(v > 0.0)) fail(key, "must be positive, got " + fmt(v));
-    return v;
-  }
-  std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) {
-      if (fallback) return *fallback;
-      fail(key, "missing value (a string)");
-    }
-    auto v = n->value<std::string>();
-    if (!v) fail(key, "wrong type: expected a string");
-    return *v;
-  }
-  Vec2 point(const std::string& key, std::optional<Vec2> fallback = std::nullopt) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) {
-      if (fallback) return *fallback;
-      fail(key, "missing value (an array of 2 numbers)");
-    }
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 2) fail(key, "expected an array of 2 numbers [x, y]");
-    Vec2 p;
-    for (int k = 0; k < 2; ++k) {
-      auto v = (*a)[k].value<double>();
-      if (!v || !std::isfinite(*v)) fail(key, "every entry must be a finite number");
-      p[k] = *v;
-    }
-    return p;
-  }
-  Table sub(const std::string& key) {
-    used_.insert(key);
-    const toml::node* n = t_.get(key);
-    if (!n) return Table(empty(), full(key), file_);
-    if (!n->is_table()) fail(key, "wrong type: expected a table");
-    return Table(*n->as_table(), full(key), file_);
-  }
-  std::vector<Table> array(const std::string& key) {
-    used_.insert(key);
-    std::vector<Table> out;
-    const toml::node* n = t_.get(key);
-    if (!n) return out;
-    const toml::array* a = n->as_array();
-    if (!a || !a->is_array_of_tables())
-      fail(key, "wrong type: expected an array of tables ([[" + full(key) + "]])");
-    for (std::size_t i = 0; i < a->size(); ++i)
-      out.emplace_back(*(*a)[i].as_table(), full(key) + "[" + std::to_string(i) + "]", file_);
-    return out;
-  }
-  void rejectUnknown() const {
-    for (const auto& [k, v] : t_)
-      if (!used_.count(std::string(k.str()))) fail(std::string(k.str()), "unknown key");
-  }
-  static std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
-
- private:
-  static const toml::table& empty() {
-    static const toml::table e;
-    return e;
-  }
-  const toml::table& t_;
-  std::string path_;
-  const std::string& file_;
-  std::set<std::string> used_;
-};
-
-void readGeometry(Table g, PackingScene& s) {
+void readGeometry(SceneTable g, PackingScene& s) {
   Vec2 at = g.point("start");
   const Vec2 start = at;
-  std::vector<Table> path = g.array("path");
+  std::vector<SceneTable> path = g.array("path");
   if (path.size() < 1) g.fail("path", "missing: at least one [[geometry.path]] piece");
   double scale = 0.0;
-  for (Table& piece : path) {
+  for (SceneTable& piece : path) {
     const Vec2 to = piece.point("to");
     const std::string turn = piece.string("turn", "ccw");
     if (piece.has("center")) {
@@ -133,7 +35,8 @@ void readGeometry(Table g, PackingScene& s) {
       const double r0 = (at - c).norm(), r1 = (to - c).norm();
       if (!(r0 > 0.0)) piece.fail("center", "coincides with the arc's start point");
       if (std::abs(r0 - r1) > 1e-9 * r0)
-        piece.fail("center", "is " + Table::fmt(r0) + " from the start but " + Table::fmt(r1) +
+        piece.fail("center", "is " + SceneTable::fmt(r0) + " from the start but " +
+                                 SceneTable::fmt(r1) +
                                  " from 'to': not the centre of an arc through both");
       if (turn != "ccw" && turn != "cw") piece.fail("turn", "expected \"ccw\" or \"cw\"");
       s.container.push_back(arc(at, to, c, turn == "ccw"));
@@ -169,14 +72,14 @@ PackingScene parsePackingScene(const std::string& text, const std::string& file)
     msg << file << ":" << e.source().begin.line << ": " << e.description();
     throw SceneError(msg.str());
   }
-  Table top(root, "", s.file);
+  SceneTable top(root, "", s.file);
   s.name = top.string("name");
   if (s.name.empty() || s.name.find_first_of("/\\ ") != std::string::npos)
     top.fail("name", "must be a non-empty file name without spaces or slashes");
   s.description = top.string("description", "");
   readGeometry(top.sub("geometry"), s);
 
-  Table fluid = top.sub("fluid");
+  SceneTable fluid = top.sub("fluid");
   s.phase.name = fluid.string("name", "water");
   s.phase.rho0 = fluid.positive("rho0", 1000.0);
   s.phase.c0 = fluid.positive("c0");
@@ -187,7 +90,7 @@ PackingScene parsePackingScene(const std::string& text, const std::string& file)
     fluid.fail("gravity", "is the magnitude of g (acting along -y): must not be negative");
   fluid.rejectUnknown();
 
-  Table p = top.sub("packing");
+  SceneTable p = top.sub("packing");
   PackingParameters& q = s.parameters;
   s.dx = p.positive("dx");
   s.latticeOrigin = p.point("lattice_origin", Vec2::Zero());
@@ -219,7 +122,7 @@ PackingScene parsePackingScene(const std::string& text, const std::string& file)
   q.beta = 2.0 * packingPressure / s.phase.rho0;
   p.rejectUnknown();
 
-  Table output = top.sub("output");
+  SceneTable output = top.sub("output");
   const double every = output.positive("history_every", 1);
   if (every != std::floor(every)) output.fail("history_every", "must be a whole number");
   s.historyEvery = static_cast<int>(every);

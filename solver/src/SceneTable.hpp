@@ -1,0 +1,199 @@
+#pragma once
+// The scene readers' view of one TOML table (Scene.cpp, packing/PackingScene.cpp): it knows its
+// dotted path, reports every error against the file and the key (SceneError), and remembers which
+// keys were read so that unknown (misspelt) keys are rejected. Internal to the solver library.
+#include <toml++/toml.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sph/Scene.hpp"  // SceneError
+
+namespace sph {
+
+class SceneTable {
+ public:
+  SceneTable(const toml::table& t, std::string path, const std::string& file)
+      : t_(t), path_(std::move(path)), file_(file) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw SceneError(file_ + ": key '" + full(key) + "': " + what);
+  }
+  std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  bool has(const std::string& key) {
+    used_.insert(key);
+    return t_.contains(key);
+  }
+
+  double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(key, "missing value (a number)");
+    }
+    if (auto v = n->value<double>()) {
+      if (!std::isfinite(*v)) fail(key, "must be a finite number, got " + fmt(*v));
+      return *v;
+    }
+    fail(key, std::string("wrong type: expected a number, got ") + typeName(*n));
+  }
+  // A whole number (a TOML integer, or a float without a fractional part).
+  long integer(const std::string& key, std::optional<long> fallback = std::nullopt) {
+    const double v = number(key, fallback ? std::optional<double>(*fallback) : std::nullopt);
+    if (v != std::floor(v) || std::abs(v) > 1e9) fail(key, "must be a whole number, got " + fmt(v));
+    return static_cast<long>(v);
+  }
+  double positive(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (!(v > 0.0)) fail(key, "must be positive, got " + fmt(v));
+    return v;
+  }
+  double nonNegative(const std::string& key, std::optional<double> fallback = std::nullopt) {
+    const double v = number(key, fallback);
+    if (v < 0.0) fail(key, "must not be negative, got " + fmt(v));
+    return v;
+  }
+  std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(key, "missing value (a string)");
+    }
+    if (auto v = n->value<std::string>()) return *v;
+    fail(key, std::string("wrong type: expected a string, got ") + typeName(*n));
+  }
+  bool boolean(const std::string& key, bool fallback) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) return fallback;
+    if (auto v = n->value<bool>()) return *v;
+    fail(key, std::string("wrong type: expected true or false, got ") + typeName(*n));
+  }
+  std::vector<double> vector(const std::string& key, int size,
+                             std::optional<std::vector<double>> fallback = std::nullopt) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) {
+      if (fallback) return *fallback;
+      fail(key, "missing value (an array of " + std::to_string(size) + " numbers)");
+    }
+    const toml::array* a = n->as_array();
+    if (!a) fail(key, std::string("wrong type: expected an array of numbers, got ") + typeName(*n));
+    if (static_cast<int>(a->size()) != size)
+      fail(key, "expected " + std::to_string(size) + " numbers (one per dimension), got " +
+                    std::to_string(a->size()));
+    std::vector<double> out;
+    for (const auto& e : *a) {
+      auto v = e.value<double>();
+      const std::string entry = "entry " + std::to_string(out.size());
+      if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
+      if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
+      out.push_back(*v);
+    }
+    return out;
+  }
+  // A size x size matrix written as an array of rows, returned row-major.
+  std::vector<double> matrix(const std::string& key, int size) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) fail(key, "missing value (an array of " + std::to_string(size) + " rows)");
+    const toml::array* a = n->as_array();
+    const std::string shape = std::to_string(size) + " x " + std::to_string(size);
+    if (!a || static_cast<int>(a->size()) != size)
+      fail(key, "expected a " + shape + " matrix written as " + std::to_string(size) +
+                    " rows, e.g. [[1.0, 0.0], [0.0, -1.0]]");
+    std::vector<double> out;
+    for (std::size_t r = 0; r < a->size(); ++r) {
+      const toml::array* row = (*a)[r].as_array();
+      if (!row || static_cast<int>(row->size()) != size)
+        fail(key, "row " + std::to_string(r) + " must be an array of " + std::to_string(size) +
+                      " numbers (a " + shape + " matrix)");
+      for (const auto& e : *row) {
+        auto v = e.value<double>();
+        const std::string entry =
+            "entry [" + std::to_string(r) + "][" + std::to_string(out.size() % size) + "]";
+        if (!v) fail(key, "wrong type: " + entry + " is " + typeName(e) + ", expected a number");
+        if (!std::isfinite(*v)) fail(key, entry + " must be a finite number, got " + fmt(*v));
+        out.push_back(*v);
+      }
+    }
+    return out;
+  }
+  SceneTable sub(const std::string& key) {
+    used_.insert(key);
+    const toml::node* n = t_.get(key);
+    if (!n) return SceneTable(empty(), full(key), file_);
+    if (!n->is_table()) fail(key, std::string("wrong type: expected a table, got ") + typeName(*n));
+    return SceneTable(*n->as_table(), full(key), file_);
+  }
+  std::vector<SceneTable> array(const std::string& key) {
+    used_.insert(key);
+    std::vector<SceneTable> out;
+    const toml::node* n = t_.get(key);
+    if (!n) return out;
+    const toml::array* a = n->as_array();
+    if (!a || !a->is_array_of_tables())
+      fail(key, "wrong type: expected an array of tables ([[" + full(key) + "]])");
+    for (std::size_t i = 0; i < a->size(); ++i)
+      out.emplace_back(*(*a)[i].as_table(), full(key) + "[" + std::to_string(i) + "]", file_);
+    return out;
+  }
+  // A 2-D point [x, y] (the packing scenes' geometry).
+  Eigen::Vector2d point(const std::string& key,
+                        std::optional<Eigen::Vector2d> fallback = std::nullopt) {
+    if (fallback && !t_.contains(key)) {
+      used_.insert(key);
+      return *fallback;
+    }
+    const std::vector<double> v = vector(key, 2);
+    return {v[0], v[1]};
+  }
+  // Call after reading a table: any key never asked for is unknown.
+  void rejectUnknown() const {
+    for (const auto& [k, v] : t_)
+      if (!used_.count(std::string(k.str()))) fail(std::string(k.str()), "unknown key");
+  }
+
+  static std::string fmt(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+ private:
+  static const toml::table& empty() {
+    static const toml::table e;
+    return e;
+  }
+  static const char* typeName(const toml::node& n) {
+    switch (n.type()) {
+      case toml::node_type::string:
+        return "a string";
+      case toml::node_type::integer:
+        return "an integer";
+      case toml::node_type::floating_point:
+        return "a number";
+      case toml::node_type::boolean:
+        return "a boolean";
+      case toml::node_type::array:
+        return "an array";
+      case toml::node_type::table:
+        return "a table";
+      default:
+        return "a date or time";
+    }
+  }
+  const toml::table& t_;
+  std::string path_;
+  const std::string& file_;
+  std::set<std::string> used_;
+};
+
+}  // namespace sph
