@@ -44,6 +44,64 @@ std::vector<Vec<D>> latticeNodes(const FluidBlock& b, double dx) {
   return out;
 }
 
+// The sides of a rectangular block that lie on a free-slip or no-slip face of the domain: the run
+// closes them with mirror ghosts (Boundaries), so the packing mirrors the fluid there too instead
+// of using solid layers; packed against solid layers the block sat 0.35 dx from such a wall, and
+// the run's ghosts pushed it off at once (measured, README: Cartesian against packed start).
+std::vector<packing::MirrorWall> ghostWallSides(const FluidBlock& b, const Scene& scene) {
+  std::vector<packing::MirrorWall> walls;
+  if (b.shape != FluidBlock::Shape::rectangle) return walls;
+  const double tol = 1e-9 * scene.dx;
+  for (int a = 0; a < 2; ++a)
+    for (int side = 0; side < 2; ++side) {
+      const FaceKind k = scene.faces[a][side];
+      const double face = side ? scene.upper[a] : scene.lower[a];
+      const double edge = side ? b.upper[a] : b.lower[a];
+      if ((k == FaceKind::free_slip || k == FaceKind::no_slip) && std::abs(face - edge) < tol)
+        walls.push_back({a, face, side ? -1 : 1});
+    }
+  return walls;
+}
+
+// Solid particles closing the other sides of a rectangular block (its free surface, section 2 of
+// the paper): the nodes of the block's own lattice (latticeNodes) within `layers` of it on the
+// fluid side of every wall, plus their mirror images across the walls (corners: both), as the
+// run's ghosts mirror the fluid. The lattice of the block and the layers is then at rest
+// (grad Gamma = 0); packing moves what a free-surface corner or an uneven edge disturbs.
+std::vector<Vec<2>> solidAlongOpenSides(const FluidBlock& b,
+                                        const std::vector<packing::MirrorWall>& walls, double dx,
+                                        int layers) {
+  const Vec<2> lo(b.lower[0], b.lower[1]);
+  const long nx = std::lround((b.upper[0] - b.lower[0]) / dx);
+  const long ny = std::lround((b.upper[1] - b.lower[1]) / dx);
+  const auto fluidSide = [&](const Vec<2>& y) {
+    for (const auto& w : walls)
+      if (w.fluidSide * (y[w.axis] - w.at) <= 0.0) return false;
+    return true;
+  };
+  const auto reflect = [](Vec<2> y, const packing::MirrorWall& w) {
+    y[w.axis] = 2.0 * w.at - y[w.axis];
+    return y;
+  };
+  std::vector<Vec<2>> out;
+  for (long i = -layers; i < nx + layers; ++i)
+    for (long j = -layers; j < ny + layers; ++j) {
+      if (i >= 0 && i < nx && j >= 0 && j < ny) continue;  // a fluid node
+      const Vec<2> y = lo + Vec<2>(i + 0.5, j + 0.5) * dx;
+      if (!fluidSide(y)) continue;
+      out.push_back(y);
+      const double reach = layers * dx;
+      for (std::size_t a = 0; a < walls.size(); ++a) {
+        if (std::abs(y[walls[a].axis] - walls[a].at) >= reach) continue;
+        out.push_back(reflect(y, walls[a]));
+        for (std::size_t c = a + 1; c < walls.size(); ++c)
+          if (walls[c].axis != walls[a].axis && std::abs(y[walls[c].axis] - walls[c].at) < reach)
+            out.push_back(reflect(reflect(y, walls[a]), walls[c]));
+      }
+    }
+  return out;
+}
+
 // Colagrossi et al. (2012) packing of a 2-D block from its lattice nodes: the block is closed by
 // fixed solid layers (its free surface treated as a wall, section 2), V0 = area / N, eq. (2.16)
 // with the scene's kernel and h/dx, until T / (N beta) < the block's threshold. Returns V0.
@@ -65,7 +123,12 @@ double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<2>>& x
   p.kernel = scene.kernel, p.hOverDx = scene.hOverDx;
   p.alpha = b.packingAlpha, p.maxIterations = b.packingMaxIterations;
   const int layers = static_cast<int>(std::ceil(2.0 * scene.hOverDx - 1e-9));
-  ParticlePacking packing(x, solidLayers(region, scene.dx, layers).position, V0, scene.dx, p);
+  const std::vector<MirrorWall> walls = ghostWallSides(b, scene);
+  ParticlePacking packing(x,
+                          walls.empty() ? solidLayers(region, scene.dx, layers).position
+                                        : solidAlongOpenSides(b, walls, scene.dx, layers),
+                          V0, scene.dx, p);
+  packing.setMirrorWalls(walls);
   // From rest T = 0: the test applies from the first iteration on.
   report.history.push_back(packing.record());
   while (packing.iteration() < p.maxIterations &&

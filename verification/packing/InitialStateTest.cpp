@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "Results.hpp"
 #include "sph/InitialParticles.hpp"
@@ -139,6 +140,36 @@ TEST(InitialState, PackedRectangleKeepsAreaAndStaysInside) {
                       "<=", 1e-12, "V0 = area / N, section 2; round-off"));
   EXPECT_TRUE(r.check("packed rectangle: max distance outside the block [m]", outside, "<", 0.0,
                       "section 2: the fixed solid particles close the domain"));
+}
+
+// A column standing on two walls with two free surfaces (the dam break's, 13 x 25 nodes at dx 0.02
+// for 0.25 x 0.5): packed against the mirror ghosts the run will use on its wall sides and solid
+// layers on the others, its lattice is already at rest, grad Gamma = 0 to round-off, so the packing
+// stops at its first check and the particles stay on their lattice (they sat 0.35 dx from the walls
+// when packed against solid layers there, and the run's ghosts pushed them off at once).
+TEST(InitialState, RectangleOnWallsIsPackedOnItsLattice) {
+  const std::string text =
+      "name = \"column\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [1.33, 1.0]\n"
+      "x_lower = \"free_slip\"\nx_upper = \"free_slip\"\ny_lower = \"free_slip\"\n"
+      "y_upper = \"open\"\n[[phase]]\nname = \"water\"\nrho0 = 1000.0\nc0 = 24.4\n[[fluid]]\n"
+      "lower = [0.0, 0.0]\nupper = [0.5, 0.25]\ninitial = \"packed\"\n[numerics]\ndx = 0.02\n"
+      "end_time = 1.0\n";
+  const Scene s = parseScene(text, "column.toml");
+  std::vector<PackedBlock> packed;
+  const Particles<2> p = latticeParticles<2>(s, &packed);
+  ASSERT_EQ(packed.size(), 1u);
+  double moved = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double x = p.r[i].x() / 0.02 - 0.5, y = p.r[i].y() / 0.02 - 0.5;  // lattice indices
+    moved = std::max({moved, std::abs(x - std::round(x)), std::abs(y - std::round(y))});
+  }
+  verification::Results r;
+  EXPECT_TRUE(r.check("column on walls: max |grad Gamma| dx at the start",
+                      packed[0].history.front().maxGradGamma * 0.02, "<=", 1e-10,
+                      "mirror images and lattice layers continue the lattice: round-off"));
+  EXPECT_TRUE(r.check("column on walls: largest move off the lattice / dx", moved, "<=", 1e-10,
+                      "at rest from the start: round-off"));
+  EXPECT_TRUE(packed[0].converged);
 }
 
 TEST(InitialState, BadInputNamesTheKey) {

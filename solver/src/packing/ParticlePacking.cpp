@@ -39,6 +39,11 @@ ParticlePacking::ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> soli
   evaluate();
 }
 
+void ParticlePacking::setMirrorWalls(std::vector<MirrorWall> walls) {
+  mirrors_ = std::move(walls);
+  evaluate();
+}
+
 void ParticlePacking::wrap() {
   for (Vec2& x : x_)
     for (int a = 0; a < 2; ++a) {
@@ -64,6 +69,25 @@ void ParticlePacking::evaluate() {
               y.y() > box_.lo.y() - support && y.y() < box_.hi.y() + support)
             all_.push_back(y);
         }
+  }
+  if (!mirrors_.empty()) {
+    // Images across each wall within the kernel support, and across pairs of walls (corners).
+    const double support = 2.0 * h_;
+    auto reflect = [](Vec2 y, const MirrorWall& w) {
+      y[w.axis] = 2.0 * w.at - y[w.axis];
+      return y;
+    };
+    auto near = [&](const Vec2& y, const MirrorWall& w) {
+      return std::abs(y[w.axis] - w.at) < support;
+    };
+    for (std::size_t i = 0; i < nf; ++i)
+      for (std::size_t a = 0; a < mirrors_.size(); ++a) {
+        if (!near(x_[i], mirrors_[a])) continue;
+        all_.push_back(reflect(x_[i], mirrors_[a]));
+        for (std::size_t b = a + 1; b < mirrors_.size(); ++b)
+          if (mirrors_[b].axis != mirrors_[a].axis && near(x_[i], mirrors_[b]))
+            all_.push_back(reflect(reflect(x_[i], mirrors_[a]), mirrors_[b]));
+      }
   }
   const std::size_t nFluidLike = all_.size();
   all_.insert(all_.end(), solid_.begin(), solid_.end());
@@ -121,6 +145,14 @@ void ParticlePacking::step() {
     x_[i] += dt_ * u_[i];
   }
   if (periodic_) wrap();
+  // A particle that drifted across a mirror wall is reflected back, its normal velocity reversed
+  // (as the run does, Simulation: wall reflections).
+  for (const MirrorWall& w : mirrors_)
+    for (std::size_t i = 0; i < n; ++i)
+      if (w.fluidSide * (x_[i][w.axis] - w.at) < 0.0) {
+        x_[i][w.axis] = 2.0 * w.at - x_[i][w.axis];
+        u_[i][w.axis] = -u_[i][w.axis];
+      }
   evaluate();
   for (std::size_t i = 0; i < n; ++i) u_[i] = damp * (u_[i] - half * beta * gradGamma_[i]);
   ++iteration_;

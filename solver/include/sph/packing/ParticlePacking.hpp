@@ -48,6 +48,15 @@ struct PeriodicBox {
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
 };
 
+// A straight wall x[axis] = at that the packing sees as the SPH run's mirror ghost wall
+// (Boundaries): fluid particles within the kernel support of it see their mirror images (corners:
+// double images) as fluid, so the packed state is at rest under the boundary the run will use.
+struct MirrorWall {
+  int axis = 0;
+  double at = 0.0;
+  int fluidSide = 1;  // +1: the fluid is where x[axis] > at; -1: below
+};
+
 class ParticlePacking {
  public:
   // `fluid` moves, `solid` stays; every particle has volume V0; h = hOverDx dx.
@@ -57,6 +66,10 @@ class ParticlePacking {
   // not wider than 2 lambda h.
   ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0, double dx,
                   const PackingParameters& parameters, const PeriodicBox& box);
+
+  // Mirror the fluid across these walls from now on (the energy of Appendix B is then not exact:
+  // an image moves with its particle).
+  void setMirrorWalls(std::vector<MirrorWall> walls);
 
   void step();  // one iteration of eq. (2.16)
   // Steps until T/beta < stopKineticEnergy or maxIterations; `observe` sees every record,
@@ -84,6 +97,7 @@ class ParticlePacking {
   PackingParameters parameters_;
   bool periodic_ = false;
   PeriodicBox box_;
+  std::vector<MirrorWall> mirrors_;
   std::vector<Vec2> x_, u_, solid_, all_;
   std::vector<Vec2> gradGamma_;
   std::vector<double> gamma_, potentialTerm_;
