@@ -33,6 +33,17 @@ def convergence_entries(results: list) -> list:
     return out
 
 
+def recorded_figures(results: list) -> list:
+    """Figures the tests measured and report without a threshold (findings, not criteria)."""
+    out = []
+    for res in results:
+        for f in res.data.get("figures", []) or []:
+            if isinstance(f, dict):
+                out.append({"test": res.test, "name": str(f.get("name", "?")), "measured": f.get("measured"),
+                            "source": str(f.get("source", ""))})
+    return out
+
+
 def _reference_pair(runs):
     """The first (probe name, reference key) for which every run has a computable reference error."""
     first = runs[0]

@@ -133,6 +133,15 @@ def convergence(entries: list) -> str:
     return "".join(parts)
 
 
+def figures(items: list) -> str:
+    if not items:
+        return '<p class="note">none recorded.</p>'
+    rows = "".join(f"<tr><td>{escape(f['test'])}</td><td>{escape(f['name'])}</td><td>{_fmt(f['measured'])}</td>"
+                   f"<td>{escape(f['source'])}</td></tr>" for f in items)
+    return ('<p class="note">Measured and reported without a threshold: findings, not criteria.</p>'
+            f"<table><tr><th>test</th><th>figure</th><th>measured</th><th>source</th></tr>{rows}</table>")
+
+
 def speed_accuracy(items: dict) -> str:
     if not items:
         return ('<p class="note">not run: no scene has runs at two or more resolutions '
@@ -202,6 +211,7 @@ Also: <a href="summary.json">summary.json</a>, <a href="junit.xml">junit.xml</a>
 <section><h2>Environment</h2>{environment(r['environment'])}</section>
 <section><h2>Validation cases</h2>{cases}</section>
 <section><h2>Convergence (verification)</h2>{convergence(r['convergence'])}</section>
+<section><h2>Recorded figures (verification)</h2>{figures(r['figures'])}</section>
 <section><h2>Speed versus accuracy</h2>{speed_accuracy(r['speed_accuracy'])}</section>
 <section><h2>Stability map</h2>{stability(r['stability'])}</section>
 <section><h2>Performance</h2>{performance(r['performance'])}</section>

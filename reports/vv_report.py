@@ -171,13 +171,13 @@ def main(argv=None) -> int:
         "counts": tally, "problems": problems, "criteria": found,
         "environment": analysis.environment(runs),
         "cases": case_pages(runs, found, table, out, args.quick),
-        "convergence": conv, "speed_accuracy": speed,
+        "convergence": conv, "speed_accuracy": speed, "figures": analysis.recorded_figures(results),
         "stability": stability,
         "performance": perf_items(args.perf, out, args.quick),
     }
     (out / "index.html").write_text(report_html.page(report), encoding="utf-8")
     summary = {k: report[k] for k in ("generated", "inputs", "counts", "problems", "environment", "convergence",
-                                      "speed_accuracy")}
+                                      "speed_accuracy", "figures")}
     summary["criteria"] = [c.as_dict() for c in found]
     summary["stability"] = [{k: v for k, v in s.items() if k != "points"} for s in report["stability"]]
     summary["performance"] = [{k: v for k, v in p.items() if k not in ("data", "rows")} for p in report["performance"]]

@@ -187,6 +187,19 @@ def test_sweep_runs_feed_speed_accuracy_with_unstable_points_marked(tmp_path):
     assert any(n.startswith("speed-accuracy-cfl") for n in names) and "density_band" in html
 
 
+def test_recorded_figures_are_shown_but_decide_nothing(tmp_path, make_result):
+    path = make_result(tmp_path / "results" / "Demo.Figure.json", "Demo.Figure", convergence=False)
+    data = json.loads(path.read_text())
+    data["figures"] = [{"name": "decay rate / theory", "measured": 1.76, "source": "theory 1"}]
+    path.write_text(json.dumps(data))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", tmp_path / "results")
+    html, _ = images_exist(out)
+    assert summary["figures"] == [{"test": "Demo.Figure", "name": "decay rate / theory", "measured": 1.76,
+                                   "source": "theory 1"}]
+    assert "decay rate / theory" in html and summary["counts"]["failed"] == 0
+    assert summary["counts"]["passed"] == 1  # the one check; the figure is no criterion
+
+
 def test_references_load_with_their_scaling():
     for key in references.REFERENCES:
         data = references.load(key)

@@ -63,32 +63,43 @@ Results::~Results() {
   out << "\n  ],\n  \"convergence\": [";
   for (std::size_t i = 0; i < convergence_.size(); ++i)
     out << (i ? ",\n    " : "\n    ") << convergence_[i];
+  out << "\n  ],\n  \"figures\": [";
+  for (std::size_t i = 0; i < figures_.size(); ++i)
+    out << (i ? ",\n    " : "\n    ") << figures_[i];
   out << "\n  ]\n}\n";
 }
 
 bool Results::check(const std::string& name, double measured, const std::string& comparison,
                     double threshold, const std::string& source) {
   bool pass = false;
-  if (comparison == "<") pass = measured < threshold;
-  else if (comparison == "<=") pass = measured <= threshold;
-  else if (comparison == ">") pass = measured > threshold;
-  else if (comparison == ">=") pass = measured >= threshold;
+  if (comparison == "<")
+    pass = measured < threshold;
+  else if (comparison == "<=")
+    pass = measured <= threshold;
+  else if (comparison == ">")
+    pass = measured > threshold;
+  else if (comparison == ">=")
+    pass = measured >= threshold;
   checks_.push_back("{\"name\": " + quote(name) + ", \"measured\": " + number(measured) +
-                    ", \"threshold\": " + number(threshold) + ", \"comparison\": " +
-                    quote(comparison) + ", \"source\": " + quote(source) +
+                    ", \"threshold\": " + number(threshold) +
+                    ", \"comparison\": " + quote(comparison) + ", \"source\": " + quote(source) +
                     ", \"pass\": " + (pass ? "true" : "false") + "}");
   return pass;
+}
+
+void Results::figure(const std::string& name, double measured, const std::string& source) {
+  figures_.push_back("{\"name\": " + quote(name) + ", \"measured\": " + number(measured) +
+                     ", \"source\": " + quote(source) + "}");
 }
 
 double Results::convergence(const std::string& name, const std::string& xLabel,
                             const std::vector<double>& x, const std::vector<double>& error,
                             double theoryOrder, const std::string& source) {
   const double order = observedOrder(x, error);
-  convergence_.push_back("{\"name\": " + quote(name) + ", \"x_label\": " + quote(xLabel) +
-                         ", \"x\": " + array(x) + ", \"error\": " + array(error) +
-                         ", \"observed_order\": " + number(order) +
-                         ", \"theory_order\": " + number(theoryOrder) +
-                         ", \"source\": " + quote(source) + "}");
+  convergence_.push_back(
+      "{\"name\": " + quote(name) + ", \"x_label\": " + quote(xLabel) + ", \"x\": " + array(x) +
+      ", \"error\": " + array(error) + ", \"observed_order\": " + number(order) +
+      ", \"theory_order\": " + number(theoryOrder) + ", \"source\": " + quote(source) + "}");
   return order;
 }
 

@@ -15,14 +15,17 @@ class Results {
   // Records `measured comparison threshold` and returns whether it holds, for EXPECT_TRUE.
   bool check(const std::string& name, double measured, const std::string& comparison,
              double threshold, const std::string& source);
+  // Records a measured figure that has no threshold (a finding reported, not asserted).
+  void figure(const std::string& name, double measured, const std::string& source);
   // Records errors against a resolution (or time step) and returns the least-squares slope of
   // log(error) against log(x) over all points.
-  double convergence(const std::string& name, const std::string& xLabel, const std::vector<double>& x,
-                     const std::vector<double>& error, double theoryOrder, const std::string& source);
+  double convergence(const std::string& name, const std::string& xLabel,
+                     const std::vector<double>& x, const std::vector<double>& error,
+                     double theoryOrder, const std::string& source);
 
  private:
   std::string test_;
-  std::vector<std::string> checks_, convergence_;
+  std::vector<std::string> checks_, convergence_, figures_;
 };
 
 // Least-squares slope of log(e) against log(x).

@@ -88,9 +88,10 @@ TEST(Hydrostatic, TankSettlesToHydrostaticPressure) {
                 "free-surface particles sit dx/2 below the surface: O(dx) at best");
   r.convergence("hydrostatic tank max|u| / sqrt(gH), second half of t sqrt(g/H) = 10", "dx [m]", dx,
                 speed, 1.0, "spurious currents from the surface's kernel cut (Colagrossi et al.)");
-  r.check("mirror ghosts, H/dx = 10: pressure L2 error", mirror.pressureL2, ">=", 0.0, "reported");
-  r.check("mirror ghosts, H/dx = 10: max|u| / sqrt(gH)", mirror.spuriousSpeed, ">=", 0.0,
-          "reported");
+  r.figure("mirror ghosts, H/dx = 10: pressure L2 error", mirror.pressureL2,
+           "the paper's plain mirror ghosts, for comparison");
+  r.figure("mirror ghosts, H/dx = 10: max|u| / sqrt(gH)", mirror.spuriousSpeed,
+           "the paper's plain mirror ghosts, for comparison");
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const std::string at = ", H/dx = " + std::to_string(cells[k]);
     // Lobovsky & Kren report volume variations below 0.3 % for the dam break (section 3); a
