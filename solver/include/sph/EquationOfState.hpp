@@ -19,7 +19,12 @@ struct Phase {
 
 struct TaitEquationOfState {
   static double pressure(double rho, const Phase& ph) {
-    return ph.p0 + ph.bulkModulus() * (std::pow(rho / ph.rho0, ph.gamma) - 1.0);
+    const double x = rho / ph.rho0;
+    // gamma = 7 (every scene) by four multiplications, x^7 = (x^2)^2 x^2 x, within a few ulp of
+    // std::pow and several times cheaper; it runs for every particle at every force evaluation.
+    const double x2 = x * x;
+    const double xGamma = ph.gamma == 7.0 ? x2 * x2 * x2 * x : std::pow(x, ph.gamma);
+    return ph.p0 + ph.bulkModulus() * (xGamma - 1.0);
   }
   // The inverse, used to start a fluid at hydrostatic pressure.
   static double density(double p, const Phase& ph) {
