@@ -1,6 +1,9 @@
 #include "sph/ForceEvaluation.hpp"
 
 #include <omp.h>
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -10,34 +13,97 @@ namespace sph {
 // How the loop is laid out (issue 7):
 // * The interaction set is copied, cell-sorted, into one array per scalar field (structure of
 //   arrays), with the per-particle factors of the pair sums precomputed (p/rho^2, 1/rho, m/rho).
-// * For each fluid particle the candidates in its 3^(D-1) cell rows (CellList::forEachAdjacentRow)
-//   are swept in order; those within reach are packed (index and r_ij) into a per-thread buffer,
-//   and a second loop over the packed pairs evaluates the terms. That loop has no branch (the
-//   approaching-pair test of eq. 10 is a select) and is vectorised with `omp simd`, whose lane
-//   split is fixed at compile time: each particle's rates are its own neighbours' sum in a fixed
-//   order, whatever the thread count, and no thread writes another particle's rates (no atomics).
+//   The arrays end in `lanes` far-away, massless entries, so that a vector may read past the end.
+// * Cells are half the reach, so a fluid particle's candidates are the 5^(D-1) rows of five cells
+//   around it (CellList::forEachAdjacentRow<2>), each a contiguous range of the sorted arrays:
+//   in 2-D about 45 candidates for 20 neighbours, against 66 in 3 rows of 3 full-size cells.
+//   The rows are cut into blocks of `lanes` consecutive entries, once per cell (the particles of
+//   a cell share them).
+// * Pass 1 tests a block at a time (one vector of `lanes` doubles, GCC vector extensions) and
+//   appends the neighbours (inside the row, 0 < r_ij < support h_ij) to a per-thread list, in
+//   sorted order. Pass 2 evaluates the terms on that list, `lanes` neighbours at a time, padded
+//   with a far-away massless entry. Without the list every candidate would go through the square
+//   root and the division, which share one unit and bound the loop (~15 cycles a vector on the
+//   reference machine).
+// * Lane l of every vector adds into lane l of the accumulators (kept in registers), and the
+//   lanes are summed in a fixed order at the end. So each particle's rates are its own
+//   neighbours' sum in an order fixed by the cell list alone, whatever the thread count, and no
+//   thread writes another particle's rates (no atomics). Pass 2 has no branch: the
+//   approaching-pair test of eq. 10 is a select.
+// * One square root and one division per pair: 1/r, 1/h_ij, 1/(r^2 + eta^2) and 1/(rho_i + rho_j)
+//   come from the reciprocal of their product (pairReciprocals).
 // * All arrays live in the workspace and only grow: no allocation per step.
+namespace {
+constexpr int lanes = 4;  // one AVX2 register of doubles (two SSE2 registers on x86-64-v2)
+using Vd = double __attribute__((vector_size(lanes * sizeof(double))));
+using Vi = std::int64_t __attribute__((vector_size(lanes * sizeof(std::int64_t))));
+inline Vd load(const double* p) {  // lanes consecutive doubles, unaligned
+  Vd v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+inline Vd broadcast(double x) {
+  return Vd{} + x;
+}
+// Bit l set where lane l of the mask is set (all ones).
+inline unsigned laneBits(Vi mask) {
+#if defined(__AVX__)
+  return static_cast<unsigned>(_mm256_movemask_pd(reinterpret_cast<__m256d>(mask)));
+#else
+  unsigned bits = 0;
+  for (int l = 0; l < lanes; ++l) bits |= static_cast<unsigned>(mask[l] & 1) << l;
+  return bits;
+#endif
+}
+// For each 4-bit lane mask, the set lanes in order (then zeros): compressOffsets[0b1010] =
+// {1, 3, 0, 0}. Appending j + these to a list and advancing by the mask's popcount keeps the
+// lanes inside.
+using Vi32 = int __attribute__((vector_size(lanes * sizeof(int))));
+constexpr Vi32 compressOffsets[16] = {{0, 0, 0, 0}, {0, 0, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0},
+                                      {2, 0, 0, 0}, {0, 2, 0, 0}, {1, 2, 0, 0}, {0, 1, 2, 0},
+                                      {3, 0, 0, 0}, {0, 3, 0, 0}, {1, 3, 0, 0}, {0, 1, 3, 0},
+                                      {2, 3, 0, 0}, {0, 2, 3, 0}, {1, 2, 3, 0}, {0, 1, 2, 3}};
+inline Vd sqrt(Vd x) {
+  Vd r;
+  for (int l = 0; l < lanes; ++l) r[l] = __builtin_sqrt(x[l]);  // one vsqrtpd (-fno-math-errno)
+  return r;
+}
+inline double sum(Vd x) {  // the lanes, in a fixed order
+  double s = 0.0;
+  for (int l = 0; l < lanes; ++l) s += x[l];
+  return s;
+}
+}  // namespace
+
 template <int D>
 struct ForceEvaluation<D>::Workspace {
   CellList<D> cells;
   // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k.
   std::array<std::vector<double>, D> x, v;
   std::vector<double> h, rho, rhoInv, pOverRho2, m, mOverRho, mu;
-  std::vector<int> fluid;     // sorted positions of the fluid entries (those that receive rates)
-  struct alignas(64) Pairs {  // one thread's packed neighbours of its current particle
-    std::vector<int> j;
-    std::array<std::vector<double>, D> r;
-    std::vector<double> r2;
-    void reserve(std::size_t n) {
-      if (j.size() >= n) return;
-      j.resize(n), r2.resize(n);
-      for (auto& c : r) c.resize(n);
-    }
+  std::vector<int> fluid;      // sorted positions of the fluid entries (those that receive rates)
+  struct alignas(64) Blocks {  // one thread's blocks (first entry, end of its row) and neighbours
+    std::vector<std::int64_t> first, end;
+    std::vector<int> neighbours;
   };
-  std::vector<Pairs> pairs;
+  std::vector<Blocks> blocks;
 };
 
 namespace {
+
+// 1/a, 1/b, 1/c, 1/d from one division: with P = a b c d, 1/a = (b c d) / P and so on. Each is
+// within a few ulp of the direct quotient; the terms' sum is compared with the O(N^2) reference
+// loop to 1e-12 (verification/core/ForceEvaluationTest.cpp). All four are positive and of
+// moderate size in any SI scene (P ~ 1e-5 at dx = 0.01 m), far from overflow and underflow.
+struct Reciprocals {
+  Vd a, b, c, d;
+};
+inline Reciprocals pairReciprocals(Vd a, Vd b, Vd c, Vd d) {
+  const Vd ab = a * b, cd = c * d;
+  const Vd inv = 1.0 / (ab * cd);
+  const Vd abInv = inv * cd, cdInv = inv * ab;
+  return {abInv * b, abInv * a, cdInv * d, cdInv * c};
+}
 
 template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool VariableH, int D>
 void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluation<D>::Workspace& w,
@@ -45,21 +111,27 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
   const std::size_t n = set.size();
   double hMax = 0.0;
   for (double hk : set.h) hMax = std::max(hMax, hk);
+  // Cells of half the largest reach, support h_max (h_ij <= h_max): neighbours within two cells.
+  // The grid may have 4 cells per point per halving, as many as the full-size cells would.
   w.cells.build(
-      n, [&](std::size_t i, int a) { return set.x[i][a]; }, Kernel::support * hMax);
+      n, [&](std::size_t i, int a) { return set.x[i][a]; }, 0.5 * Kernel::support * hMax, 4 << D);
   const auto& order = w.cells.order();
-  for (int a = 0; a < D; ++a) w.x[a].resize(n), w.v[a].resize(n);
-  w.h.resize(n), w.rho.resize(n), w.pOverRho2.resize(n), w.m.resize(n);
-  if constexpr (MorrisViscosity) w.mu.resize(n), w.rhoInv.resize(n);
-  if constexpr (VariableH) w.mOverRho.resize(n);
+  const std::size_t nPadded = n + lanes;
+  for (int a = 0; a < D; ++a) w.x[a].resize(nPadded), w.v[a].resize(nPadded);
+  w.h.resize(nPadded), w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
+  w.mu.resize(nPadded), w.rhoInv.resize(nPadded), w.mOverRho.resize(nPadded);
+  for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
+    for (int a = 0; a < D; ++a) w.x[a][k] = 1e100, w.v[a][k] = 0.0;
+    w.h[k] = hMax, w.rho[k] = 1.0, w.rhoInv[k] = 1.0, w.pOverRho2[k] = 0.0, w.m[k] = 0.0;
+    w.mu[k] = 0.0, w.mOverRho[k] = 0.0;
+  }
   const int nFluid = static_cast<int>(set.nFluid);
   w.fluid.clear();
   for (std::size_t k = 0; k < n; ++k)
     if (order[k] < nFluid) w.fluid.push_back(static_cast<int>(k));
   out.resize(set.nFluid);
-
-  const int nThreads = omp_get_max_threads();
-  if (static_cast<int>(w.pairs.size()) < nThreads) w.pairs.resize(nThreads);
+  if (static_cast<int>(w.blocks.size()) < omp_get_max_threads())
+    w.blocks.resize(omp_get_max_threads());
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
   const std::int64_t nWork = static_cast<std::int64_t>(w.fluid.size());
 
@@ -69,94 +141,112 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
     for (std::int64_t k = 0; k < nSorted; ++k) {
       const int s = order[k];
       for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a], w.v[a][k] = set.v[s][a];
-      const double rho = set.rho[s];
-      w.rho[k] = rho, w.m[k] = set.m[s], w.h[k] = set.h[s];
-      w.pOverRho2[k] = set.p[s] / (rho * rho);
-      if constexpr (MorrisViscosity) w.mu[k] = set.mu[s], w.rhoInv[k] = 1.0 / rho;
-      if constexpr (VariableH) w.mOverRho[k] = set.m[s] / rho;
+      const double rho = set.rho[s], rhoInv = 1.0 / rho;
+      w.rho[k] = rho, w.rhoInv[k] = rhoInv, w.m[k] = set.m[s], w.h[k] = set.h[s];
+      w.pOverRho2[k] = set.p[s] * rhoInv * rhoInv;
+      w.mu[k] = set.mu[s], w.mOverRho[k] = set.m[s] * rhoInv;
     }
-    auto& buf = w.pairs[omp_get_thread_num()];
-    const double* xs[D];
-    const double* vs[D];
+    const double* xs[3] = {};  // three components whatever D, for the pair loop's r_ij, v_ij
+    const double* vs[3] = {};
     for (int a = 0; a < D; ++a) xs[a] = w.x[a].data(), vs[a] = w.v[a].data();
     const double *hs = w.h.data(), *rhos = w.rho.data(), *prs = w.pOverRho2.data(),
-                 *ms = w.m.data(), *mus = w.mu.data(), *rhoInvs = w.rhoInv.data(),
-                 *mOverRhos = w.mOverRho.data();
+                 *ms = w.m.data(), *mus = w.mu.data(), *mOverRhos = w.mOverRho.data();
     constexpr double reachFactor2 = 0.25 * Kernel::support * Kernel::support;
+    const Vi iota = {0, 1, 2, 3};
+    static_assert(lanes == 4);
+    auto& blocks = w.blocks[omp_get_thread_num()];
+    std::int64_t blocksOf = -1;  // the cell whose blocks `blocks` holds
+    std::size_t nBlocks = 0;
 
 #pragma omp for schedule(dynamic, 64)
     for (std::int64_t f = 0; f < nWork; ++f) {
       const int i = w.fluid[f];
-      std::array<double, D> xi, vi;
-      for (int a = 0; a < D; ++a) xi[a] = xs[a][i], vi[a] = vs[a][i];
+      if (const std::int64_t c = w.cells.sortedCell(i); c != blocksOf) {
+        nBlocks = 0;
+        w.cells.template forEachAdjacentRow<2>(c, [&](int b, int e) {
+          const std::size_t need = nBlocks + (e - b + lanes - 1) / lanes;
+          if (blocks.first.size() < need)
+            blocks.first.resize(2 * need), blocks.end.resize(2 * need);
+          if (blocks.neighbours.size() < lanes * (need + 1))
+            blocks.neighbours.resize(2 * lanes * (need + 1));
+          for (std::int64_t j0 = b; j0 < e; j0 += lanes)
+            blocks.first[nBlocks] = j0, blocks.end[nBlocks++] = e;
+        });
+        blocksOf = c;
+      }
+      Vd xi[3], vi[3];
+      for (int a = 0; a < 3; ++a)
+        xi[a] = broadcast(a < D ? xs[a][i] : 0.0), vi[a] = broadcast(a < D ? vs[a][i] : 0.0);
       const double hi = hs[i], rhoi = rhos[i], pri = prs[i];
+      const double muRhoInvi = mus[i] * w.rhoInv[i], rhoInvi = w.rhoInv[i];
+      Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
 
-      // Pass 1: pack the neighbours (0 < r_ij < support h_ij, h_ij = (h_i + h_j)/2) in sorted
-      // order.
+      // Pass 1: the neighbours (0 < r_ij < support h_ij) among the candidates, in sorted order.
+      int* nb = blocks.neighbours.data();
       int count = 0;
-      w.cells.forEachAdjacentRow(w.cells.sortedCell(i), [&](int begin, int end) {
-        buf.reserve(static_cast<std::size_t>(count + end - begin));
-        int* bj = buf.j.data();
-        double* br2 = buf.r2.data();
-        double* br[D];
-        for (int a = 0; a < D; ++a) br[a] = buf.r[a].data();
-        for (int j = begin; j < end; ++j) {
-          double r2 = 0.0;
-          std::array<double, D> rij;
-          for (int a = 0; a < D; ++a) rij[a] = xi[a] - xs[a][j], r2 += rij[a] * rij[a];
-          const double hSum = hi + hs[j];
-          bj[count] = j, br2[count] = r2;
-          for (int a = 0; a < D; ++a) br[a][count] = rij[a];
-          // r2 > 0 drops the particle itself; a distinct particle at r = 0 adds nothing to any
-          // term.
-          count += (r2 < reachFactor2 * hSum * hSum) & (r2 > 0.0);
-        }
-      });
+      for (std::size_t b = 0; b < nBlocks; ++b) {
+        const std::int64_t j = blocks.first[b];
+        const Vd rx = xi[0] - load(xs[0] + j);
+        const Vd ry = D > 1 ? xi[1] - load(xs[1] + j) : Vd{};
+        const Vd rz = D > 2 ? xi[2] - load(xs[2] + j) : Vd{};
+        const Vd r2 = rx * rx + ry * ry + rz * rz;
+        const Vd hSum = hi + load(hs + j);  // 2 h_ij
+        // r2 > 0 drops the particle itself; a distinct particle at r = 0 adds nothing to any term.
+        const Vi in = (j + iota < blocks.end[b]) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum);
+        const unsigned bits = laneBits(in);  // append the lanes inside, in order
+        const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
+        __builtin_memcpy(nb + count, &packed, sizeof packed);
+        count += __builtin_popcount(bits);
+      }
+      // Pad the last vector with the far-away, massless entry n: it adds zero.
+      for (int l = 0; l < lanes; ++l) nb[count + l] = static_cast<int>(nSorted);
 
-      // Pass 2: the terms, over the packed pairs.
-      const int* bj = buf.j.data();
-      const double* br2 = buf.r2.data();
-      const double* br[D];
-      for (int a = 0; a < D; ++a) br[a] = buf.r[a].data();
-      double drho = 0.0, dh = 0.0, dv0 = 0.0, dv1 = 0.0, dv2 = 0.0;
-      const double mui = MorrisViscosity ? mus[i] : 0.0;
-      const double rhoInvi = MorrisViscosity ? rhoInvs[i] : 0.0;
-#pragma omp simd reduction(+ : drho, dh, dv0, dv1, dv2)
-      for (int k = 0; k < count; ++k) {
-        const int j = bj[k];
-        const double r2 = br2[k];
-        const double hSum = hi + hs[j];
-        const double hInv = 2.0 / hSum;                            // 1 / h_ij
-        const double F = Kernel::template gradOverR<D>(r2, hInv);  // grad_i W_ij = F r_ij
-        std::array<double, D> vij;
-        double vr = 0.0;  // v_ij . r_ij
-        for (int a = 0; a < D; ++a) vij[a] = vi[a] - vs[a][j], vr += vij[a] * br[a][k];
-        const double mj = ms[j];
-        const double vDotGradW = vr * F;
-        drho += mj * vDotGradW;                                   // eq. (11)
-        if constexpr (VariableH) dh += mOverRhos[j] * vDotGradW;  // eq. (13)
-        double pressureTerm = pri + prs[j];                       // eq. (12)
+      // Pass 2: the terms, one vector of neighbours at a time.
+      for (int k = 0; k < count; k += lanes) {
+        const int* jj = nb + k;
+        auto gather = [&](const double* p) { return Vd{p[jj[0]], p[jj[1]], p[jj[2]], p[jj[3]]}; };
+        // r_ij, v_ij by component.
+        const Vd rx = xi[0] - gather(xs[0]), vx = vi[0] - gather(vs[0]);
+        const Vd ry = D > 1 ? xi[1] - gather(xs[1]) : Vd{};
+        const Vd vy = D > 1 ? vi[1] - gather(vs[1]) : Vd{};
+        const Vd rz = D > 2 ? xi[2] - gather(xs[2]) : Vd{};
+        const Vd vz = D > 2 ? vi[2] - gather(vs[2]) : Vd{};
+        const Vd r2 = rx * rx + ry * ry + rz * rz, vr = vx * rx + vy * ry + vz * rz;
+        const Vd hSum = hi + gather(hs), hSum2 = hSum * hSum;  // 2 h_ij
+        // The padding lanes get a harmless r (and add zero: their masses are zero).
+        const Vd r2c = k + iota < count ? r2 : hSum2;
+        const Vd mj = gather(ms), mOverRhoj = gather(mOverRhos);
+        const Vd r = sqrt(r2c);
         // Anti-crossing eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h_ij^2 = hSum^2 / 4.
-        const double rEta2Inv = 1.0 / (r2 + 0.0025 * hSum * hSum);
+        const Vd rEta2 = r2c + 0.0025 * hSum2;
+        const Vd one = broadcast(1.0);
+        const Vd rhoSum = ArtificialViscosity ? rhoi + gather(rhos) : one;
+        const auto inv = pairReciprocals(hSum, rEta2, rhoSum, Kernel::usesInverseR ? r : one);
+        const Vd hInv = 2.0 * inv.a;                                 // 1 / h_ij
+        const Vd F = Kernel::template gradOverR<D>(r, inv.d, hInv);  // grad_i W_ij = F r_ij
+        const Vd vDotGradW = vr * F;
+        accRho += mj * vDotGradW;                                // eq. (11)
+        if constexpr (VariableH) accH += mOverRhoj * vDotGradW;  // eq. (13)
+        Vd pressureTerm = pri + gather(prs);                     // eq. (12)
         if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
-          const double muij = vr * rEta2Inv;
-          const double pi = 0.5 * beta * hSum * hSum / (rhoi + rhos[j]) * muij * muij;
-          pressureTerm += vr < 0.0 ? pi : 0.0;
+          const Vd muij = vr * inv.b;
+          const Vd pi = (0.5 * beta) * hSum2 * inv.c * muij * muij;
+          pressureTerm += vr < 0.0 ? pi : Vd{};
         }
-        const double cr = -mj * pressureTerm * F;  // coefficient of r_ij
-        double cv = 0.0;                           // coefficient of v_ij
-        if constexpr (MorrisViscosity)             // eq. (9); r_ij . grad_i W_ij = F r^2
-          cv = mj * (mui + mus[j]) * (rhoInvi * rhoInvs[j]) * (F * r2) * rEta2Inv;
-        dv0 += cr * br[0][k] + cv * vij[0];
-        if constexpr (D > 1) dv1 += cr * br[1][k] + cv * vij[1];
-        if constexpr (D > 2) dv2 += cr * br[2][k] + cv * vij[2];
+        const Vd cr = -mj * pressureTerm * F;  // coefficient of r_ij
+        Vd cv{};                               // coefficient of v_ij
+        if constexpr (MorrisViscosity)  // eq. (9); (mu_i + mu_j)/(rho_i rho_j), r_ij.grad W = F r^2
+          cv = mOverRhoj * (muRhoInvi + gather(mus) * rhoInvi) * (F * r2c) * inv.b;
+        accX += cr * rx + cv * vx;
+        if constexpr (D > 1) accY += cr * ry + cv * vy;
+        if constexpr (D > 2) accZ += cr * rz + cv * vz;
       }
       const int dst = order[i];
-      out.drhodt[dst] = drho;
-      out.dvdt[dst][0] = dv0;
-      if constexpr (D > 1) out.dvdt[dst][1] = dv1;
-      if constexpr (D > 2) out.dvdt[dst][2] = dv2;
-      out.dhdt[dst] = VariableH ? hi / D * dh : 0.0;
+      out.drhodt[dst] = sum(accRho);
+      out.dvdt[dst][0] = sum(accX);
+      if constexpr (D > 1) out.dvdt[dst][1] = sum(accY);
+      if constexpr (D > 2) out.dvdt[dst][2] = sum(accZ);
+      out.dhdt[dst] = VariableH ? hi / D * sum(accH) : 0.0;
     }
   }
 }

@@ -8,11 +8,13 @@
 
 namespace sph {
 
-// h^n for a small compile-time n, without std::pow's cost in the pair loop.
-template <int n>
-constexpr double ipow(double h) {
-  if constexpr (n == 0)
-    return 1.0;
+// h^n for a small compile-time n >= 1, without std::pow's cost in the pair loop. T is double or
+// the pair loop's vector of doubles.
+template <int n, class T>
+constexpr T ipow(T h) {
+  static_assert(n >= 1);
+  if constexpr (n == 1)
+    return h;
   else
     return h * ipow<n - 1>(h);
 }
@@ -26,6 +28,7 @@ std::string_view name(KernelKind);
 struct QuadraticKernel {
   static constexpr double support = 2.0;
   static constexpr KernelKind kind = KernelKind::quadratic;
+  static constexpr bool usesInverseR = true;  // gradOverR reads 1/r
   template <int D>
   static constexpr double norm() {
     if constexpr (D == 1) return 1.0;
@@ -44,12 +47,13 @@ struct QuadraticKernel {
     if (q >= 2.0) return 0.0;
     return norm<D>() / ipow<D + 1>(h) * (0.375 * q - 0.75);
   }
-  // (1/r) dW/dr from r^2 and 1/h, for the pair loop: valid for 0 < r < 2h only (the loop has
-  // already dropped the other pairs), and branch-free so that the loop vectorises.
+  // (1/r) dW/dr for the pair loop, from r, 1/r and 1/h, which the loop computes once per pair
+  // with one square root and one division for all its terms. Valid for 0 < r < 2h only (the
+  // loop masks the other pairs out) and branch-free so that the loop vectorises.
   // (0.375 q - 0.75) / r = 0.375 / h - 0.75 / r.
-  template <int D>
-  static double gradOverR(double r2, double hInv) {
-    return norm<D>() * ipow<D + 1>(hInv) * (0.375 * hInv - 0.75 / std::sqrt(r2));
+  template <int D, class T>
+  static T gradOverR(T /*r*/, T rInv, T hInv) {
+    return norm<D>() * ipow<D + 1>(hInv) * (0.375 * hInv - 0.75 * rInv);
   }
 };
 
@@ -57,6 +61,7 @@ struct QuadraticKernel {
 struct CubicSplineKernel {
   static constexpr double support = 2.0;
   static constexpr KernelKind kind = KernelKind::cubic_spline;
+  static constexpr bool usesInverseR = true;
   template <int D>
   static constexpr double norm() {
     if constexpr (D == 1) return 2.0 / 3.0;
@@ -78,12 +83,15 @@ struct CubicSplineKernel {
     const double df = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
     return norm<D>() / ipow<D + 1>(h) * df;
   }
-  // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR); for q < 1, df/q = -3 + 2.25 q.
-  template <int D>
-  static double gradOverR(double r2, double hInv) {
-    const double r = std::sqrt(r2), q = r * hInv, s = 2.0 - q;
-    const double dfOverQ = q < 1.0 ? -3.0 + 2.25 * q : -0.75 * s * s / q;
-    return norm<D>() * ipow<D + 2>(hInv) * dfOverQ;
+  // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR); for q < 1, df/q = -3 + 2.25 q;
+  // for q >= 1, df/q = -0.75 s^2 / q with 1/q = h/r, so (1/r) dW/dr = N/h^(D+1) (-0.75 s^2) / r.
+  // Both branches are computed and one selected (a vector select when T is a vector).
+  template <int D, class T>
+  static T gradOverR(T r, T rInv, T hInv) {
+    const T q = r * hInv, s = 2.0 - q;
+    const T inner = ipow<D + 2>(hInv) * (-3.0 + 2.25 * q);
+    const T outer = ipow<D + 1>(hInv) * (-0.75 * s * s) * rInv;
+    return norm<D>() * (q < 1.0 ? inner : outer);
   }
 };
 
@@ -92,6 +100,7 @@ struct CubicSplineKernel {
 struct WendlandC2Kernel {
   static constexpr double support = 2.0;
   static constexpr KernelKind kind = KernelKind::wendland_c2;
+  static constexpr bool usesInverseR = false;
   template <int D>
   static constexpr double norm() {
     if constexpr (D == 1) return 5.0 / 8.0;
@@ -116,9 +125,9 @@ struct WendlandC2Kernel {
   }
   // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR): the factor q cancels against
   // 1/r = 1/(q h), so no division is left.
-  template <int D>
-  static double gradOverR(double r2, double hInv) {
-    const double s = 1.0 - 0.5 * std::sqrt(r2) * hInv;
+  template <int D, class T>
+  static T gradOverR(T r, T /*rInv*/, T hInv) {
+    const T s = 1.0 - 0.5 * r * hInv;
     if constexpr (D == 1) return norm<D>() * hInv * hInv * hInv * (-3.0 * s * s);
     return norm<D>() * ipow<D + 2>(hInv) * (-5.0 * s * s * s);
   }
