@@ -1,5 +1,6 @@
 #include "sph/Simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -201,13 +202,17 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
     return Failure{FailureCause::dt_collapse, step_ + 1, t_, limiting, m.str()};
   }
   const double dt = std::min(dtStable, dtMax);
-  // Predictor.
-  yStar_ = y_;
+  // Predictor. Every evolved field of y* is written below; the others are copied, not the whole
+  // state (issue 7: no copy of y per step). y*.p is not read: rates() takes p from the EOS, and
+  // the accepted state's p is set at the end of the step.
+  yStar_.resize(n);
+  std::copy(y_.m.begin(), y_.m.end(), yStar_.m.begin());
+  std::copy(y_.phase.begin(), y_.phase.end(), yStar_.phase.begin());
   for (std::size_t i = 0; i < n; ++i) {
-    yStar_.r[i] += dt * y_.v[i];
-    yStar_.v[i] += dt * f_.dvdt[i];
-    yStar_.rho[i] += dt * f_.drhodt[i];
-    yStar_.h[i] += dt * f_.dhdt[i];
+    yStar_.r[i] = y_.r[i] + dt * y_.v[i];
+    yStar_.v[i] = y_.v[i] + dt * f_.dvdt[i];
+    yStar_.rho[i] = y_.rho[i] + dt * f_.drhodt[i];
+    yStar_.h[i] = y_.h[i] + dt * f_.dhdt[i];
   }
   wrapPeriodic(yStar_);
   rates(yStar_, t_ + dt, fStar_);
