@@ -68,6 +68,15 @@ inline Vd sqrt(Vd x) {
   for (int l = 0; l < lanes; ++l) r[l] = __builtin_sqrt(x[l]);  // one vsqrtpd (-fno-math-errno)
   return r;
 }
+// Rows a, b, c, d (four fields of four particles) to columns (one field of the four particles).
+inline void transpose(Vd& a, Vd& b, Vd& c, Vd& d) {
+  const Vd t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6),
+           t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+  const Vd t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6),
+           t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+  a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5), b = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+  c = __builtin_shufflevector(t0, t2, 2, 3, 6, 7), d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
+}
 inline double sum(Vd x) {  // the lanes, in a fixed order
   double s = 0.0;
   for (int l = 0; l < lanes; ++l) s += x[l];
@@ -81,6 +90,11 @@ struct ForceEvaluation<D>::Workspace {
   // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k.
   std::array<std::vector<double>, D> x, v;
   std::vector<double> h, rho, rhoInv, pOverRho2, m, mOverRho, mu;
+  // For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho, p/rho^2, m}
+  // (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors and transposes
+  // them, instead of gathering each field.
+  std::vector<double> recordStore;
+  double* record = nullptr;    // recordStore's first 64-byte aligned element
   std::vector<int> fluid;      // sorted positions of the fluid entries (those that receive rates)
   struct alignas(64) Blocks {  // one thread's blocks (first entry, end of its row) and neighbours
     std::vector<std::int64_t> first, end;
@@ -120,10 +134,20 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
   for (int a = 0; a < D; ++a) w.x[a].resize(nPadded), w.v[a].resize(nPadded);
   w.h.resize(nPadded), w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
   w.mu.resize(nPadded), w.rhoInv.resize(nPadded), w.mOverRho.resize(nPadded);
+  constexpr int recordSize = 8;
+  if constexpr (D <= 2) {
+    w.recordStore.resize(recordSize * nPadded + 8);
+    const auto address = reinterpret_cast<std::uintptr_t>(w.recordStore.data());
+    w.record = w.recordStore.data() + (64 - address % 64) % 64 / sizeof(double);
+  }
   for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
     for (int a = 0; a < D; ++a) w.x[a][k] = 1e100, w.v[a][k] = 0.0;
     w.h[k] = hMax, w.rho[k] = 1.0, w.rhoInv[k] = 1.0, w.pOverRho2[k] = 0.0, w.m[k] = 0.0;
     w.mu[k] = 0.0, w.mOverRho[k] = 0.0;
+    if constexpr (D <= 2) {
+      double* r = w.record + recordSize * k;
+      r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
+    }
   }
   const int nFluid = static_cast<int>(set.nFluid);
   w.fluid.clear();
@@ -145,6 +169,12 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
       w.rho[k] = rho, w.rhoInv[k] = rhoInv, w.m[k] = set.m[s], w.h[k] = set.h[s];
       w.pOverRho2[k] = set.p[s] * rhoInv * rhoInv;
       w.mu[k] = set.mu[s], w.mOverRho[k] = set.m[s] * rhoInv;
+      if constexpr (D <= 2) {
+        double* r = w.record + recordSize * k;
+        r[0] = w.x[0][k], r[1] = D > 1 ? w.x[D - 1][k] : 0.0;
+        r[2] = w.v[0][k], r[3] = D > 1 ? w.v[D - 1][k] : 0.0;
+        r[4] = w.h[k], r[5] = rho, r[6] = w.pOverRho2[k], r[7] = w.m[k];
+      }
     }
     const double* xs[3] = {};  // three components whatever D, for the pair loop's r_ij, v_ij
     const double* vs[3] = {};
@@ -183,16 +213,17 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
 
       // Pass 1: the neighbours (0 < r_ij < support h_ij) among the candidates, in sorted order.
       int* nb = blocks.neighbours.data();
+      const std::int64_t *first = blocks.first.data(), *rowEnd = blocks.end.data();
       int count = 0;
       for (std::size_t b = 0; b < nBlocks; ++b) {
-        const std::int64_t j = blocks.first[b];
+        const std::int64_t j = first[b];
         const Vd rx = xi[0] - load(xs[0] + j);
         const Vd ry = D > 1 ? xi[1] - load(xs[1] + j) : Vd{};
         const Vd rz = D > 2 ? xi[2] - load(xs[2] + j) : Vd{};
         const Vd r2 = rx * rx + ry * ry + rz * rz;
         const Vd hSum = hi + load(hs + j);  // 2 h_ij
         // r2 > 0 drops the particle itself; a distinct particle at r = 0 adds nothing to any term.
-        const Vi in = (j + iota < blocks.end[b]) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum);
+        const Vi in = (j + iota < rowEnd[b]) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum);
         const unsigned bits = laneBits(in);  // append the lanes inside, in order
         const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
         __builtin_memcpy(nb + count, &packed, sizeof packed);
@@ -205,29 +236,40 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
       for (int k = 0; k < count; k += lanes) {
         const int* jj = nb + k;
         auto gather = [&](const double* p) { return Vd{p[jj[0]], p[jj[1]], p[jj[2]], p[jj[3]]}; };
+        Vd xj[3], vj[3], hj, rhoj, prj, mj;  // the four neighbours' fields
+        if constexpr (D <= 2) {
+          const double* r[4] = {w.record + recordSize * jj[0], w.record + recordSize * jj[1],
+                                w.record + recordSize * jj[2], w.record + recordSize * jj[3]};
+          xj[0] = load(r[0]), xj[1] = load(r[1]), vj[0] = load(r[2]), vj[1] = load(r[3]);
+          transpose(xj[0], xj[1], vj[0], vj[1]);
+          hj = load(r[0] + 4), rhoj = load(r[1] + 4), prj = load(r[2] + 4), mj = load(r[3] + 4);
+          transpose(hj, rhoj, prj, mj);
+          xj[2] = vj[2] = Vd{};
+        } else {
+          for (int a = 0; a < 3; ++a) xj[a] = gather(xs[a]), vj[a] = gather(vs[a]);
+          hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
+        }
         // r_ij, v_ij by component.
-        const Vd rx = xi[0] - gather(xs[0]), vx = vi[0] - gather(vs[0]);
-        const Vd ry = D > 1 ? xi[1] - gather(xs[1]) : Vd{};
-        const Vd vy = D > 1 ? vi[1] - gather(vs[1]) : Vd{};
-        const Vd rz = D > 2 ? xi[2] - gather(xs[2]) : Vd{};
-        const Vd vz = D > 2 ? vi[2] - gather(vs[2]) : Vd{};
+        const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
+        const Vd ry = xi[1] - xj[1], vy = vi[1] - vj[1];
+        const Vd rz = xi[2] - xj[2], vz = vi[2] - vj[2];
         const Vd r2 = rx * rx + ry * ry + rz * rz, vr = vx * rx + vy * ry + vz * rz;
-        const Vd hSum = hi + gather(hs), hSum2 = hSum * hSum;  // 2 h_ij
+        const Vd hSum = hi + hj, hSum2 = hSum * hSum;  // 2 h_ij
         // The padding lanes get a harmless r (and add zero: their masses are zero).
         const Vd r2c = k + iota < count ? r2 : hSum2;
-        const Vd mj = gather(ms), mOverRhoj = gather(mOverRhos);
+        const Vd mOverRhoj = gather(mOverRhos);
         const Vd r = sqrt(r2c);
         // Anti-crossing eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h_ij^2 = hSum^2 / 4.
         const Vd rEta2 = r2c + 0.0025 * hSum2;
         const Vd one = broadcast(1.0);
-        const Vd rhoSum = ArtificialViscosity ? rhoi + gather(rhos) : one;
+        const Vd rhoSum = ArtificialViscosity ? rhoi + rhoj : one;
         const auto inv = pairReciprocals(hSum, rEta2, rhoSum, Kernel::usesInverseR ? r : one);
         const Vd hInv = 2.0 * inv.a;                                 // 1 / h_ij
         const Vd F = Kernel::template gradOverR<D>(r, inv.d, hInv);  // grad_i W_ij = F r_ij
         const Vd vDotGradW = vr * F;
         accRho += mj * vDotGradW;                                // eq. (11)
         if constexpr (VariableH) accH += mOverRhoj * vDotGradW;  // eq. (13)
-        Vd pressureTerm = pri + gather(prs);                     // eq. (12)
+        Vd pressureTerm = pri + prj;                             // eq. (12)
         if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
           const Vd muij = vr * inv.b;
           const Vd pi = (0.5 * beta) * hSum2 * inv.c * muij * muij;
