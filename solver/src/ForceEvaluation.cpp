@@ -33,6 +33,11 @@ namespace sph {
 // * One square root and one division per pair: 1/r, 1/h_ij, 1/(r^2 + eta^2) and 1/(rho_i + rho_j)
 //   come from the reciprocal of their product (pairReciprocals).
 // * All arrays live in the workspace and only grow: no allocation per step.
+#if defined(__GNUC__) && !defined(__clang__)
+// The vector helpers below are internal (inline, anonymous namespace): the note GCC gives on the
+// ABI of 32-byte vectors in an x86-64-v2 build does not concern them.
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 namespace {
 constexpr int lanes = 4;  // one AVX2 register of doubles (two SSE2 registers on x86-64-v2)
 using Vd = double __attribute__((vector_size(lanes * sizeof(double))));
