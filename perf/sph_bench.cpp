@@ -51,8 +51,8 @@ double peakRss() {
 
 // Peak double-precision flop rate of one core: 12 independent chains of fused multiply-adds
 // (2 flops each), enough to cover the FMA latency on two pipes. `avx2` uses 4-wide FMA (what the
-// machine can do); otherwise 2-wide SSE2 mul + add, all the project's -march=x86-64-v2 build can
-// emit.
+// machine can do, and what the default SPH_ARCH=x86-64-v3 build emits); otherwise 2-wide SSE2
+// mul + add, all an SPH_ARCH=x86-64-v2 build can emit.
 template <int Which>
 __attribute__((target("avx2,fma"))) double fmaChains(long iterations) {
   if constexpr (Which == 1) {
@@ -252,7 +252,7 @@ int main(int argc, char** argv) {
     peakSse[int(t)] = peakFlops<2>(int(t));
     std::printf(
         "peak double flops, %d thread(s): %.2f GFlop/s (AVX2 FMA), %.2f GFlop/s (SSE2 "
-        "mul+add, the build's ISA)\n",
+        "mul+add, an x86-64-v2 build's)\n",
         int(t), peakAvx[int(t)] / 1e9, peakSse[int(t)] / 1e9);
   }
 
