@@ -48,22 +48,21 @@ inline double slopePressureError(const TankRun& run, const PackingScene& s) {
 }
 
 inline TankHistory runTank(const PackingScene& s, TankRunOptions o, double tEnd,
-                           double every = 0.25, double tStartRecord = 0.0) {
+                           double every = 0.25) {
   const auto start = std::chrono::steady_clock::now();
   TankRun run(s, o);
   TankHistory h;
   h.dx = s.dx;
   h.packingIterations = run.packingIterations();
   const Region container(s.container);
-  double next = tStartRecord;
+  double next = 0.0;
   h.failure = run.runTo(tEnd, [&](const TankSample& x) {
     const Particles<2>& y = run.simulation().particles();
     for (const auto& r : y.r)
       if (!container.contains(r)) h.maxDepth = std::max(h.maxDepth, container.distance(r));
-    if (x.t < tStartRecord) return;
     h.maxSpeedOverall = std::max(h.maxSpeedOverall, x.maxSpeed);
     if (x.t + 1e-12 >= next) {
-      h.t.push_back(x.t - tStartRecord), h.maxSpeed.push_back(x.maxSpeed);
+      h.t.push_back(x.t), h.maxSpeed.push_back(x.maxSpeed);
       h.kinetic.push_back(x.kinetic);
       next += every;
     }
