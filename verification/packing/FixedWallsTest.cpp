@@ -71,32 +71,32 @@ TEST(FixedWalls, PenetrationIsAFailure) {
   EXPECT_NE(failure->message.find("beyond the tank's wall"), std::string::npos) << failure->message;
 }
 
-// Colagrossi et al. (2012), section 3.1: from a packed start the hydrostatic tank stays still.
+// Colagrossi et al. (2012), section 3.1: from a packed start the hydrostatic tank stays still
+// (to t sqrt(g/H) = 10, about 10 s here).
 TEST(TrapezoidalTankRun, PackedStartHoldsStillAtHOverDx25) {
-  const TankHistory t = runTrapezoidalTank(25.0, true, 5.0, 0.05);
+  const TankHistory t = runTrapezoidalTank(25.0, true, 10.0, 0.05);
   verification::Results r;
   ASSERT_FALSE(t.failure) << t.failure->message;
   r.history("max|u|/sqrt(gH), packed start, H/dx = 25", "t sqrt(g/H)", t.t, "max|u|/sqrt(gH)",
             t.maxSpeed, "Colagrossi et al. 2012 Fig. 8");
   // The start is not quite at rest: the packing (free surface closed by solid layers, section 2)
-  // leaves one particle in the tip of the 45-degree corner at y = 0.998 H, which in the run
-  // slides 0.03 H down the slope at up to 0.033 sqrt(gH) (t sqrt(g/H) = 0.4) and is back below
-  // 0.01 sqrt(gH) by t sqrt(g/H) = 1.6. Recorded, not asserted.
-  r.figure("max over t sqrt(g/H) <= 5 of max|u|/sqrt(gH), packed start, H/dx = 25",
-           t.maxSpeedOverall, "measured: the particle in the acute corner, see comment");
-  // Holding still: max|u| over t sqrt(g/H) in [4, 5]; measured 1.6e-3. The paper's packed
-  // start (delta-SPH, H/dx = 50, Fig. 8) stays between 1e-4 and 1e-3 sqrt(gH); bound: 3e-3, the
-  // measurement with room for platform differences, still 30 times below the Cartesian start's
-  // 0.1 sqrt(gH) at t sqrt(g/H) = 10 in the paper (Fig. 7).
+  // leaves particles in the tip of the 45-degree corner that in the run slide down the slope, at
+  // up to 1.1e-2 sqrt(gH) (measured, t sqrt(g/H) < 1). Recorded, not asserted.
+  r.figure("max over t sqrt(g/H) <= 10 of max|u|/sqrt(gH), packed start, H/dx = 25",
+           t.maxSpeedOverall, "measured: the particles in the acute corner, see comment");
+  // Holding still: max|u| over t sqrt(g/H) in [9, 10], the time of the paper's Fig. 7; measured
+  // 7.8e-4. The paper's packed start (delta-SPH, H/dx = 50, Fig. 8) stays between 1e-4 and
+  // 1e-3 sqrt(gH); bound 3e-3, room for the slow motion in the acute corner that sets it, still
+  // 30 times below the Cartesian start's 0.1 sqrt(gH) at that time in the paper (Fig. 7 left).
   double late = 0.0;
   for (std::size_t k = 0; k < t.t.size(); ++k)
-    if (t.t[k] >= 4.0) late = std::max(late, t.maxSpeed[k]);
-  EXPECT_TRUE(r.check("max|u|/sqrt(gH) over t sqrt(g/H) in [4, 5], packed start, H/dx = 25", late,
+    if (t.t[k] >= 9.0) late = std::max(late, t.maxSpeed[k]);
+  EXPECT_TRUE(r.check("max|u|/sqrt(gH) over t sqrt(g/H) in [9, 10], packed start, H/dx = 25", late,
                       "<=", 3e-3, "measured, see comment; Colagrossi et al. 2012 Figs. 7-8"));
   // Hydrostatic pressure next to the sloping wall (within 2 dx of it, below y = 0.8 H, away from
-  // the free surface): max |p - rho0 g (H - y)| / (rho0 g H) at t sqrt(g/H) = 5; measured 8.4e-3.
-  // Bound 0.02: the acoustic pressure rho0 c0 u of the motion left, u = 1.6e-3 sqrt(gH) with
-  // c0 = 10 sqrt(gH), is 0.016 rho0 g H.
+  // the free surface): max |p - rho0 g (H - y)| / (rho0 g H) at t sqrt(g/H) = 10; measured 6.9e-3.
+  // That is the acoustic pressure rho0 c0 u of the motion left (u = 7.8e-4 sqrt(gH), c0 = 10
+  // sqrt(gH): 7.8e-3 rho0 g H). Bound 0.02: the same for 2.5 times that motion.
   EXPECT_TRUE(r.check("max |p - p_hydrostatic| / (rho0 g H) within 2 dx of the 45-degree wall",
                       t.slopePressureError, "<=", 0.02,
                       "acoustic pressure rho0 c0 max|u|, see comment"));

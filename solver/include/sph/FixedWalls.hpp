@@ -8,16 +8,17 @@
 //   rho_w = rho0 ((p_w - p0) / K + 1)^(1/gamma)              (the inverse Tait EOS, eq. 28)
 //   v_w = 0,  m_w = rho_w V0,  h_w = h.
 // The g term extends the fluid's hydrostatic pressure into the wall, so a fluid at rest feels the
-// wall push back with exactly rho g (a mirrored, even pressure would lack it). A wall particle
-// with no fluid in reach has p0 and rho0, and p_w is not let below p0: near the free surface a
-// wall particle above its fluid neighbours gets p_w < p0 from the g term (the hydrostatic
-// pressure extrapolated above the surface) and pulls the fluid into the wall (measured: the
-// surface particle in the 45-degree corner of the trapezoidal tank crossed the wall by
-// t sqrt(g/H) = 0.7 without the bound). The wall is free slip: its velocity enters only the
-// continuity equation (the kinematic condition, v_w = 0) and the artificial viscosity, which the
-// tank runs leave out or keep small; no viscous wall stress is imposed. The volume m_w / rho_w is
-// the fluid's particle volume V0, so a packed fluid (sum_j grad W_ij V0 = 0 with these walls,
-// eq. 1.12) starts with no pressure imbalance.
+// wall push back with rho g (a mirrored, even pressure would lack it). A wall particle with no
+// fluid in reach has p0 and rho0, and p_w is not let below p0: near the free surface a wall
+// particle above its fluid neighbours gets p_w < p0 from the g term (the hydrostatic pressure
+// extrapolated above the surface), which would hold surface particles to the wall by tension.
+// Velocity: v_w = 0 enters the continuity equation (the kinematic condition: a particle moving
+// into the wall compresses and is pushed back) and any viscous term, where it acts as a no-slip
+// wall; Adami's free slip (no viscous wall term) would need a per-pair test in the loop, and a
+// tank at rest has no tangential flow for it to matter. The volume m_w / rho_w is the fluid's
+// particle volume V0, the volume the packing gave every solid particle, so the packing's balance
+// sum_j grad W_ij V0 = 0 (eq. 1.12) holds against these walls too (not rho0 dx^2: the packed V0
+// is area / N).
 // Chosen over the fixed ghosts of Marrone et al. (2011) because eq. (27) needs no mirror point
 // and no interpolation inside the fluid, which on acute corners and arcs are ambiguous.
 #include <vector>

@@ -47,10 +47,14 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
   H_ = setup.lengthScale;
   timeScale_ = std::sqrt(H_ / scene.gravity);
 
-  // The walls: the solid layers along the walls of the container cut higher than the free
-  // surface, so that they go on above it (a free-surface particle in a corner otherwise sees no
-  // wall above and is pushed up into it: measured in the 45-degree corner of the trapezoidal
-  // tank, which crossed the wall by t sqrt(g/H) = 0.7).
+  // The walls: the packing's solid layers along the walls (the packed fluid was packed against
+  // exactly these), continued above the free surface by the wall layers of the container cut
+  // higher, where those are not within 0.7 dx of a packing wall particle (the seam). Without the
+  // continuation the free-surface particle in the 45-degree corner of the trapezoidal tank sees
+  // no wall above it, is pushed up into the slope and crosses it by t sqrt(g/H) = 0.7 (measured).
+  // The packing itself keeps its own closure of the surface (setUp): packing against the
+  // continued walls and a thinned surface layer let a particle escape at the acute corner at
+  // H/dx = 50 (measured).
   Vec2 lo, hi;
   container_.bounds(lo, hi);
   const double h = scene.parameters.hOverDx * scene.dx;
@@ -58,22 +62,21 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
   const double cut = scene.surface + std::min(0.75 * (hi.y() - scene.surface), 2.0 * h + scene.dx);
   const SolidLayers tall = solidLayers(belowSurface(scene.container, cut), scene.dx, layers);
   std::vector<Vec2> wall;
-  for (std::size_t k = 0; k < tall.position.size(); ++k)
-    if (tall.kind[k] == Piece::Kind::wall) wall.push_back(tall.position[k]);
+  for (std::size_t k = 0; k < setup.solid.position.size(); ++k)
+    if (setup.solid.kind[k] == Piece::Kind::wall) wall.push_back(setup.solid.position[k]);
+  const std::size_t below = wall.size();
+  for (std::size_t k = 0; k < tall.position.size(); ++k) {
+    if (tall.kind[k] != Piece::Kind::wall) continue;
+    bool clear = true;
+    for (std::size_t j = 0; j < below && clear; ++j)
+      clear = (wall[j] - tall.position[k]).norm() >= 0.7 * scene.dx;
+    if (clear) wall.push_back(tall.position[k]);
+  }
 
   std::vector<Vec2> fluid = setup.fluid;
   if (options.packed) {
-    // Packed against the run's own walls, the free surface closed by its solid layers (section
-    // 2) where they do not overlap the walls' continuation (closer than 0.7 dx to a wall particle).
-    std::vector<Vec2> solid = wall;
-    for (std::size_t k = 0; k < setup.solid.position.size(); ++k) {
-      if (setup.solid.kind[k] != Piece::Kind::surface) continue;
-      bool clear = true;
-      for (const Vec2& w : wall)
-        clear = clear && (w - setup.solid.position[k]).norm() >= 0.7 * scene.dx;
-      if (clear) solid.push_back(setup.solid.position[k]);
-    }
-    ParticlePacking packing(setup.fluid, solid, setup.V0, scene.dx, scene.parameters);
+    ParticlePacking packing(setup.fluid, setup.solid.position, setup.V0, scene.dx,
+                            scene.parameters);
     packing.run();
     packingIterations_ = packing.iteration();
     fluid = packing.positions();

@@ -4,10 +4,10 @@
 // (eq. 2.16), the fixed wall particles of Adami et al. (2012) (FixedWalls) on the solid layers
 // along the walls, the hydrostatic start p = p0 + rho0 g (H_s - y), rho from the inverse Tait EOS,
 // m = rho V0, v = 0, and gravity. The scheme: Wendland C2 (the scene's kernel and h/dx),
-// continuity (Lobovsky & Kren eq. 11), pressure gradient (eq. 12), the quadratic artificial
-// viscosity of eq. (10) with the chosen beta (default 0: none; a hydrostatic tank has no shear to
-// damp and any dissipation would hide the spurious currents being measured), fixed h, the
-// predictor-corrector and time step of Simulation. 2-D only.
+// continuity (Lobovsky & Kren eq. 11), pressure gradient (eq. 12), a linear viscosity
+// nu = alpha h c0 / 8 (below: the time integrator needs it), optionally the quadratic artificial
+// viscosity of eq. (10) (default beta = 0: its quadratic form does nothing at the speeds of a
+// tank at rest), fixed h, the predictor-corrector and time step of Simulation. 2-D only.
 //
 // Optional settling (section 3.1.1, after Monaghan 1994): while t < dampingTime the momentum
 // equation carries the linear damping dv_i/dt += -zeta v_i, zeta given as zeta H / c0 (the
