@@ -93,10 +93,10 @@ TEST(TrapezoidalTankRun, LinearDampingBaseline) {
 TEST(ComplexTankRun, KineticEnergyFromBothStarts) {
   verification::Results r;
   const PackingScene s = tankScene("complex_tank.toml", 20.0);
-  // To t sqrt(g/H) = 50, not the paper's 100: from the Cartesian start one particle pushed
-  // through the round bottom next to the step (at (1.01, -0.27), dx/2 beyond the wall line) at
-  // t sqrt(g/H) = 70 (wall_penetration), measured once with an earlier wall set (the layers of
-  // the container cut above the surface); the packed start ran to 100 cleanly.
+  // To t sqrt(g/H) = 50, not the paper's 100: from the Cartesian start one particle pushes
+  // through the round bottom next to the step (at (0.95, -0.44), dx/2 beyond the wall line) at
+  // t sqrt(g/H) = 73 (wall_penetration; measured once with `sph tank`); the packed start runs to
+  // 100 cleanly.
   const double tComplex = 50.0;
   TankRunOptions o;
   const TankHistory cart = runTank(s, o, tComplex);
