@@ -44,6 +44,21 @@ def recorded_figures(results: list) -> list:
     return out
 
 
+def recorded_histories(results: list) -> list:
+    """Measured curves y(x) the tests recorded (e.g. max|u| over time), grouped per test and y label: one figure each."""
+    groups = {}
+    for res in results:
+        for h in res.data.get("histories", []) or []:
+            if not isinstance(h, dict):
+                continue
+            key = (res.test, str(h.get("y_label", "y")))
+            g = groups.setdefault(key, {"test": res.test, "y_label": key[1], "x_label": str(h.get("x_label", "x")),
+                                        "curves": []})
+            g["curves"].append({"name": str(h.get("name", "?")), "x": list(h.get("x", [])), "y": list(h.get("y", [])),
+                                "source": str(h.get("source", ""))})
+    return list(groups.values())
+
+
 def _reference_pair(runs):
     """The first (probe name, reference key) for which every run has a computable reference error."""
     first = runs[0]

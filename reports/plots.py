@@ -198,6 +198,29 @@ def convergence(entry: dict, out: Path, index: int, quick: bool = False):
     return _save(fig, out, f"convergence-{index:02d}-{slug(entry['name'])}.png", 80 if quick else 110)
 
 
+def history(group: dict, out: Path, index: int, quick: bool = False):
+    """The curves one test recorded against the same y label, on a log axis where all values are positive."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(5.6, 3.6))
+    positive = True
+    for c in group["curves"]:
+        x = np.asarray([np.nan if v is None else v for v in c["x"]], dtype=float)
+        y = np.asarray([np.nan if v is None else v for v in c["y"]], dtype=float)
+        if x.size == 0 or x.size != y.size:
+            continue
+        positive = positive and bool(np.all(y[np.isfinite(y)] > 0))
+        ax.plot(x, y, "-", lw=1.0, label=c["name"])
+    if positive:
+        ax.set_yscale("log")
+    ax.set_xlabel(group["x_label"])
+    ax.set_ylabel(group["y_label"])
+    ax.set_title(group["test"], fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=6)
+    return _save(fig, out, f"history-{index:02d}-{slug(group['test'] + '-' + group['y_label'])}.png",
+                 80 if quick else 110)
+
+
 def speed_accuracy(case: str, data: dict, out: Path, quick: bool = False):
     pts = [p for p in data["points"] if p["error"] is not None]
     if not pts:

@@ -142,6 +142,18 @@ def figures(items: list) -> str:
             f"<table><tr><th>test</th><th>figure</th><th>measured</th><th>source</th></tr>{rows}</table>")
 
 
+def histories(groups: list) -> str:
+    if not groups:
+        return '<p class="note">none recorded.</p>'
+    parts = []
+    for g in groups:
+        sources = "; ".join(sorted({c["source"] for c in g["curves"] if c["source"]}))
+        parts.append(f"<h3>{escape(g['test'])}: {escape(g['y_label'])}</h3>"
+                     + (f'<p class="note">{escape(sources)}</p>' if sources else "")
+                     + _img(g.get("figure"), g["y_label"]))
+    return '<p class="note">Measured curves, reported without a threshold.</p>' + "".join(parts)
+
+
 def speed_accuracy(items: dict) -> str:
     if not items:
         return ('<p class="note">not run: no scene has runs at two or more resolutions '
@@ -212,6 +224,7 @@ Also: <a href="summary.json">summary.json</a>, <a href="junit.xml">junit.xml</a>
 <section><h2>Validation cases</h2>{cases}</section>
 <section><h2>Convergence (verification)</h2>{convergence(r['convergence'])}</section>
 <section><h2>Recorded figures (verification)</h2>{figures(r['figures'])}</section>
+<section><h2>Recorded histories (verification)</h2>{histories(r.get('histories', []))}</section>
 <section><h2>Speed versus accuracy</h2>{speed_accuracy(r['speed_accuracy'])}</section>
 <section><h2>Stability map</h2>{stability(r['stability'])}</section>
 <section><h2>Performance</h2>{performance(r['performance'])}</section>

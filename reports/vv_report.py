@@ -156,6 +156,9 @@ def main(argv=None) -> int:
     for k, entry in enumerate(conv):
         notes = []
         entry["figure"] = _figure(notes, "convergence", plots.convergence, entry, out, k, args.quick)
+    hist = analysis.recorded_histories(results)
+    for k, group in enumerate(hist):
+        group["figure"] = _figure([], "history", plots.history, group, out, k, args.quick)
     stability = stability_items(args.stability, out, args.quick)
     speed = analysis.speed_accuracy(runs, table)
     speed.update(analysis.sweep_speed_accuracy([s for s in stability if not s.get("error")]))
@@ -172,7 +175,7 @@ def main(argv=None) -> int:
         "environment": analysis.environment(runs),
         "cases": case_pages(runs, found, table, out, args.quick),
         "convergence": conv, "speed_accuracy": speed, "figures": analysis.recorded_figures(results),
-        "stability": stability,
+        "histories": hist, "stability": stability,
         "performance": perf_items(args.perf, out, args.quick),
     }
     (out / "index.html").write_text(report_html.page(report), encoding="utf-8")

@@ -61,6 +61,7 @@ std::vector<std::string> Simulation<D>::termNames() const {
   if (g > 0) names.push_back("body_force");
   if (bounds_.anyWall()) names.push_back("ghost_walls");
   if (bounds_.anyPeriodic()) names.push_back("periodic");
+  if (halo_) names.push_back(haloName_);
   if (source_) names.push_back("source");
   return names;
 }
@@ -73,6 +74,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
   const Vec<D> ghostGravity = scene_.hydrostaticGhosts ? g : Vec<D>::Zero();
   buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax, ghostGravity, set_);
+  if (halo_) halo_(state, set_);
   forces_(set_, out);
   for (auto& a : out.dvdt) a += g;  // F/rho in eq. (12)
   if (source_) source_(t, state, out);
@@ -171,6 +173,7 @@ std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, lon
       }
     }
   }
+  if (check_) return check_(s, t, step);
   return std::nullopt;
 }
 

@@ -1,11 +1,15 @@
 // The `sph` program: run or check a scene file.
+#include <omp.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <iostream>
 #include <stdexcept>
 
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
 #include "sph/packing/PackingScene.hpp"
+#include "sph/packing/TankRun.hpp"
 
 namespace {
 
@@ -49,6 +53,38 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   pack->add_flag("--quiet", packOptions.quiet, "print nothing but errors");
 
+  // The hydrostatic tank of a packing scene run with fixed walls (Colagrossi et al. 2012, sections
+  // 3.1-3.2; solver/include/sph/packing/TankRun.hpp); the history goes to standard output as CSV.
+  sph::packing::TankRunOptions tank;
+  double tankEnd = 100.0, tankEvery = 0.25, tankHOverDx = 0.0;
+  int tankThreads = 0;
+  auto* tankCmd = app.add_subcommand(
+      "tank", "run a packing scene's tank at rest, print t sqrt(g/H), max|u|/sqrt(gH), E_k as CSV");
+  tankCmd->add_option("scene", scenePath, "packing scene file (TOML)")->required();
+  tankCmd->add_flag("--packed", tank.packed, "start from the packed particles (else the lattice)");
+  tankCmd->add_option("--end", tankEnd, "end time t sqrt(g/H)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  tankCmd->add_option("--every", tankEvery, "output interval in t sqrt(g/H)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  tankCmd->add_option("--h-over-dx", tankHOverDx, "H / dx (default: the scene's dx)")
+      ->check(CLI::PositiveNumber);
+  tankCmd->add_option("--alpha", tank.alpha, "viscosity nu = alpha h c0 / 8")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  tankCmd->add_option("--beta", tank.beta, "artificial viscosity beta, eq. (10)")
+      ->check(CLI::NonNegativeNumber);
+  tankCmd->add_option("--cfl", tank.cflAcoustic, "acoustic CFL number")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  tankCmd->add_option("--damping", tank.dampingZeta, "settling damping zeta H / c0 (section 3.1.1)")
+      ->check(CLI::NonNegativeNumber);
+  tankCmd->add_option("--damping-time", tank.dampingTime, "damping until t sqrt(g/H)")
+      ->check(CLI::NonNegativeNumber);
+  tankCmd->add_option("--threads", tankThreads, "OpenMP threads (default: all)")
+      ->check(CLI::NonNegativeNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -58,6 +94,28 @@ int main(int argc, char** argv) {
   if (pack->parsed()) {
     try {
       return sph::packing::packScene(sph::packing::readPackingScene(scenePath), packOptions);
+    } catch (const std::exception& e) {
+      return reportError(e);
+    }
+  }
+  if (tankCmd->parsed()) {
+    try {
+      if (tankThreads > 0) omp_set_num_threads(tankThreads);
+      sph::packing::PackingScene ps = sph::packing::readPackingScene(scenePath);
+      if (tankHOverDx > 0) ps.dx = ps.lengthScale / tankHOverDx;
+      sph::packing::TankRun run(ps, tank);
+      std::printf("t_sqrt_g_over_H,max_u_over_sqrt_gH,Ek_over_rho0_g_H_V\n");
+      double next = 0.0;
+      const auto failure = run.runTo(tankEnd, [&](const sph::packing::TankSample& x) {
+        if (x.t + 1e-12 < next) return;
+        std::printf("%.6g,%.6e,%.6e\n", x.t, x.maxSpeed, x.kinetic);
+        next += tankEvery;
+      });
+      if (failure) {
+        std::cerr << "error: " << sph::name(failure->cause) << ": " << failure->message << "\n";
+        return sph::exitNumericalFailure;
+      }
+      return sph::exitDone;
     } catch (const std::exception& e) {
       return reportError(e);
     }

@@ -66,7 +66,14 @@ Results::~Results() {
   out << "\n  ],\n  \"figures\": [";
   for (std::size_t i = 0; i < figures_.size(); ++i)
     out << (i ? ",\n    " : "\n    ") << figures_[i];
-  out << "\n  ]\n}\n";
+  out << "\n  ]";
+  if (!histories_.empty()) {
+    out << ",\n  \"histories\": [";
+    for (std::size_t i = 0; i < histories_.size(); ++i)
+      out << (i ? ",\n    " : "\n    ") << histories_[i];
+    out << "\n  ]";
+  }
+  out << "\n}\n";
 }
 
 bool Results::check(const std::string& name, double measured, const std::string& comparison,
@@ -90,6 +97,14 @@ bool Results::check(const std::string& name, double measured, const std::string&
 void Results::figure(const std::string& name, double measured, const std::string& source) {
   figures_.push_back("{\"name\": " + quote(name) + ", \"measured\": " + number(measured) +
                      ", \"source\": " + quote(source) + "}");
+}
+
+void Results::history(const std::string& name, const std::string& xLabel,
+                      const std::vector<double>& x, const std::string& yLabel,
+                      const std::vector<double>& y, const std::string& source) {
+  histories_.push_back("{\"name\": " + quote(name) + ", \"x_label\": " + quote(xLabel) +
+                       ", \"x\": " + array(x) + ", \"y_label\": " + quote(yLabel) +
+                       ", \"y\": " + array(y) + ", \"source\": " + quote(source) + "}");
 }
 
 double Results::convergence(const std::string& name, const std::string& xLabel,

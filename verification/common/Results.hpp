@@ -17,6 +17,9 @@ class Results {
              double threshold, const std::string& source);
   // Records a measured figure that has no threshold (a finding reported, not asserted).
   void figure(const std::string& name, double measured, const std::string& source);
+  // Records a measured history y(x) (e.g. max|u| over time), reported as a curve, not asserted.
+  void history(const std::string& name, const std::string& xLabel, const std::vector<double>& x,
+               const std::string& yLabel, const std::vector<double>& y, const std::string& source);
   // Records errors against a resolution (or time step) and returns the least-squares slope of
   // log(error) against log(x) over all points.
   double convergence(const std::string& name, const std::string& xLabel,
@@ -25,7 +28,7 @@ class Results {
 
  private:
   std::string test_;
-  std::vector<std::string> checks_, convergence_, figures_;
+  std::vector<std::string> checks_, convergence_, figures_, histories_;
 };
 
 // Least-squares slope of log(e) against log(x).

@@ -34,6 +34,15 @@ class Simulation {
   // Extra rates added after the SPH terms, e.g. the sources of a manufactured solution.
   using Source = std::function<void(double t, const Particles<D>&, Derivatives<D>&)>;
   void setSource(Source s) { source_ = std::move(s); }
+  // Entries appended to the interaction set after the fluid and its halo, before every force
+  // evaluation (e.g. fixed wall particles whose state follows the fluid); `name` is listed
+  // among the terms.
+  using Halo = std::function<void(const Particles<D>&, InteractionSet<D>&)>;
+  void setHalo(std::string name, Halo h) { haloName_ = std::move(name), halo_ = std::move(h); }
+  // A further check of every new state (e.g. wall penetration against a curved wall), run after
+  // the built-in ones; a failure stops the step as those do.
+  using Check = std::function<std::optional<Failure>(const Particles<D>&, double t, long step)>;
+  void setCheck(Check c) { check_ = std::move(c); }
 
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
@@ -76,6 +85,9 @@ class Simulation {
   Boundaries<D> bounds_;
   ForceEvaluation<D> forces_;
   Source source_;
+  Halo halo_;
+  std::string haloName_;
+  Check check_;
   Particles<D> y_, yStar_;
   Derivatives<D> f_, fStar_;
   InteractionSet<D> set_;

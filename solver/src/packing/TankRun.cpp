@@ -1,0 +1,160 @@
+#include "sph/packing/TankRun.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace sph::packing {
+
+namespace {
+// The run's scene: an open box around the container and its wall layers (the walls are the
+// FixedWalls particles, not box faces), the packing scene's fluid, kernel and h/dx.
+Scene runScene(const PackingScene& p, const TankRunOptions& o, const Vec2& lo, const Vec2& hi) {
+  Scene s;
+  s.name = p.name + (o.packed ? "_packed" : "_lattice");
+  s.file = p.file;
+  s.dimension = 2;
+  const double margin = (2.0 * p.parameters.hOverDx + 2.0) * p.dx;
+  s.lower = {lo.x() - margin, lo.y() - margin};
+  s.upper = {hi.x() + margin, hi.y() + margin};
+  for (auto& f : s.faces) f = {FaceKind::open, FaceKind::open};
+  for (auto& w : s.wallVelocity) w = {std::vector<double>(2, 0.0), std::vector<double>(2, 0.0)};
+  s.phases = {p.phase};
+  s.phases[0].mu = o.alpha * p.parameters.hOverDx * p.dx * p.phase.c0 / 8.0 * p.phase.rho0;
+  s.terms.morrisViscosity = o.alpha > 0;
+  if (s.phases[0].name.empty()) s.phases[0].name = "water";
+  s.bodyAcceleration = {0.0, -p.gravity};
+  s.terms.artificialViscosity = o.beta > 0;
+  s.beta = o.beta;
+  s.kernel = p.parameters.kernel;
+  s.dx = p.dx;
+  s.hOverDx = p.parameters.hOverDx;
+  s.endTime = 1e300;
+  s.cflAcoustic = o.cflAcoustic;
+  return s;
+}
+}  // namespace
+
+TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
+    : scene_(scene), options_(options) {
+  if (!scene.hasSurface)
+    throw std::invalid_argument(scene.file +
+                                ": a tank run needs a free surface (geometry.surface)");
+  const PackingSetup setup = setUp(scene);
+  region_ = setup.region;
+  container_ = Region(scene.container);
+  H_ = setup.lengthScale;
+  timeScale_ = std::sqrt(H_ / scene.gravity);
+
+  // The walls: the packing's solid layers along the walls (the packed fluid was packed against
+  // exactly these), continued above the free surface by the wall layers of the container cut
+  // higher, where those are not within 0.7 dx of a packing wall particle (the seam). Without the
+  // continuation the free-surface particle in the 45-degree corner of the trapezoidal tank sees
+  // no wall above it, is pushed up into the slope and crosses it by t sqrt(g/H) = 0.7 (measured).
+  // The packing itself keeps its own closure of the surface (setUp): packing against the
+  // continued walls and a thinned surface layer let a particle escape at the acute corner at
+  // H/dx = 50 (measured).
+  Vec2 lo, hi;
+  container_.bounds(lo, hi);
+  const double h = scene.parameters.hOverDx * scene.dx;
+  const int layers = static_cast<int>(std::ceil(2.0 * scene.parameters.hOverDx - 1e-9));
+  const double cut = scene.surface + std::min(0.75 * (hi.y() - scene.surface), 2.0 * h + scene.dx);
+  const SolidLayers tall = solidLayers(belowSurface(scene.container, cut), scene.dx, layers);
+  std::vector<Vec2> wall;
+  for (std::size_t k = 0; k < setup.solid.position.size(); ++k)
+    if (setup.solid.kind[k] == Piece::Kind::wall) wall.push_back(setup.solid.position[k]);
+  const std::size_t below = wall.size();
+  for (std::size_t k = 0; k < tall.position.size(); ++k) {
+    if (tall.kind[k] != Piece::Kind::wall) continue;
+    bool clear = true;
+    for (std::size_t j = 0; j < below && clear; ++j)
+      clear = (wall[j] - tall.position[k]).norm() >= 0.7 * scene.dx;
+    if (clear) wall.push_back(tall.position[k]);
+  }
+
+  std::vector<Vec2> fluid = setup.fluid;
+  if (options.packed) {
+    ParticlePacking packing(setup.fluid, setup.solid.position, setup.V0, scene.dx,
+                            scene.parameters);
+    packing.run();
+    packingIterations_ = packing.iteration();
+    fluid = packing.positions();
+    V0_ = setup.V0;  // the volume the packing gave every particle (section 2)
+  } else {
+    V0_ = scene.dx * scene.dx;  // a lattice cell
+  }
+
+  Phase phase = scene.phase;
+  phase.mu = options.alpha * h * scene.phase.c0 / 8.0 * scene.phase.rho0;
+  walls_ = std::make_shared<FixedWalls>(std::move(wall), V0_, h, scene.parameters.kernel, phase,
+                                        Vec2(0.0, -scene.gravity));
+
+  const HydrostaticFields hs = hydrostatic(fluid, V0_, scene.phase, scene.gravity, scene.surface);
+  Particles<2> y;
+  y.resize(fluid.size());
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    y.r[i] = fluid[i], y.v[i] = Vec2::Zero();
+    y.rho[i] = hs.density[i], y.m[i] = hs.mass[i], y.h[i] = h, y.p[i] = hs.pressure[i];
+    y.phase[i] = 0;
+    volume_ += V0_;
+  }
+  sim_ = std::make_unique<Simulation<2>>(runScene(scene, options, lo, hi), std::move(y));
+
+  std::shared_ptr<FixedWalls> walls = walls_;
+  sim_->setHalo("fixed_walls_adami2012",
+                [walls](const Particles<2>&, InteractionSet<2>& set) { walls->append(set); });
+  // Section 3.1.1: dv/dt += -zeta v while t < t_damp, zeta = (zeta H / c0) c0 / H.
+  if (options.dampingZeta > 0 && options.dampingTime > 0) {
+    const double zeta = options.dampingZeta * scene.phase.c0 / H_;
+    const double until = options.dampingTime * timeScale_;
+    sim_->setSource([zeta, until](double t, const Particles<2>& s, Derivatives<2>& out) {
+      if (t >= until) return;
+      for (std::size_t i = 0; i < s.size(); ++i) out.dvdt[i] -= zeta * s.v[i];
+    });
+  }
+  // A fluid particle outside the container has entered the solid: the wall failed to hold it.
+  // As for the box walls (Simulation): tolerated up to dx/2 beyond the wall line, where the first
+  // layer of wall particles sits.
+  const Region container = container_;
+  const double tolerated = 0.5 * scene.dx;
+  sim_->setCheck(
+      [container, tolerated](const Particles<2>& s, double t, long step) -> std::optional<Failure> {
+        for (std::size_t i = 0; i < s.size(); ++i) {
+          if (container.contains(s.r[i]) || container.distance(s.r[i]) <= tolerated) continue;
+          std::ostringstream m;
+          m << "step " << step << ", t = " << t << " s, particle " << i << ": position ("
+            << s.r[i].x() << ", " << s.r[i].y() << ") m is " << container.distance(s.r[i])
+            << " m beyond the tank's wall (crossed into the fixed wall particles)";
+          return Failure{FailureCause::wall_penetration, step, t, static_cast<int>(i), m.str()};
+        }
+        return std::nullopt;
+      });
+}
+
+TankSample TankRun::sample() const {
+  const Particles<2>& y = sim_->particles();
+  const double g = scene_.gravity, U = std::sqrt(g * H_);
+  TankSample s;
+  s.t = sim_->time() / timeScale_;
+  double v2 = 0, ek = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    v2 = std::max(v2, y.v[i].squaredNorm());
+    ek += 0.5 * y.m[i] * y.v[i].squaredNorm();
+  }
+  s.maxSpeed = std::sqrt(v2) / U;
+  s.kinetic = ek / (scene_.phase.rho0 * g * H_ * volume_);
+  return s;
+}
+
+std::optional<Failure> TankRun::runTo(double tEnd,
+                                      const std::function<void(const TankSample&)>& observe) {
+  if (observe && sim_->step() == 0) observe(sample());
+  while (sim_->time() < tEnd * timeScale_) {
+    if (auto failure = sim_->advance()) return failure;
+    if (observe) observe(sample());
+  }
+  return std::nullopt;
+}
+
+}  // namespace sph::packing
