@@ -86,6 +86,20 @@ class CellList {
   // The cell side actually used (cellSize, doubled as often as the O(N) guard needed).
   double cellSize() const { return size_; }
 
+  // The cell for a query point x that need not be one of the built points: -1 when x lies more
+  // than one cell beyond the grid (no point within cellSize() of it); otherwise x's cell clamped
+  // to the grid, whose adjacent cells (forEachAdjacentRange) hold every point within cellSize().
+  std::int64_t cellOf(const Vec<D>& x) const {
+    std::int64_t idx = 0, stride = 1;
+    for (int a = 0; a < D; ++a) {
+      const double k = std::floor((x[a] - lo_[a]) / size_);
+      if (k < -1.0 || k > dims_[a]) return -1;
+      idx += std::clamp(static_cast<int>(k), 0, dims_[a] - 1) * stride;
+      stride *= dims_[a];
+    }
+    return idx;
+  }
+
   // Calls f(begin, end) for the sorted range of each cell around cell `c` (itself included).
   template <class F>
   void forEachAdjacentRange(std::int64_t c, F&& f) const {

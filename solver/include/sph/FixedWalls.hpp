@@ -23,6 +23,7 @@
 // and no interpolation inside the fluid, which on acute corners and arcs are ambiguous.
 #include <vector>
 
+#include "sph/CellList.hpp"
 #include "sph/EquationOfState.hpp"
 #include "sph/InteractionSet.hpp"
 #include "sph/Kernels.hpp"
@@ -50,8 +51,8 @@ class FixedWalls {
   KernelKind kernel_;
   Phase phase_;
   Vec<2> g_;
-  // Scratch between calls: fluid entries sorted into square cells of the kernel support.
-  mutable std::vector<int> cellStart_, cellEntries_;
+  // Scratch between calls: the fluid entries in cells of the kernel support, the walls' state.
+  mutable CellList<2> cells_;
   mutable std::vector<double> p_, rho_;
 };
 

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sph/CellList.hpp"
+
 namespace sph::packing {
 
 namespace {
@@ -21,6 +23,7 @@ Scene runScene(const PackingScene& p, const TankRunOptions& o, const Vec2& lo, c
   for (auto& f : s.faces) f = {FaceKind::open, FaceKind::open};
   for (auto& w : s.wallVelocity) w = {std::vector<double>(2, 0.0), std::vector<double>(2, 0.0)};
   s.phases = {p.phase};
+  // nu = alpha h c0 / 8 (TankRunOptions); the walls take the same phase.
   s.phases[0].mu = o.alpha * p.parameters.hOverDx * p.dx * p.phase.c0 / 8.0 * p.phase.rho0;
   s.terms.morrisViscosity = o.alpha > 0;
   if (s.phases[0].name.empty()) s.phases[0].name = "water";
@@ -65,12 +68,20 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
   for (std::size_t k = 0; k < setup.solid.position.size(); ++k)
     if (setup.solid.kind[k] == Piece::Kind::wall) wall.push_back(setup.solid.position[k]);
   const std::size_t below = wall.size();
+  const double seam = 0.7 * scene.dx;
+  CellList<2> packingWall;  // O(N) seam test
+  packingWall.build(
+      below, [&](std::size_t j, int a) { return wall[j][a]; }, seam);
   for (std::size_t k = 0; k < tall.position.size(); ++k) {
     if (tall.kind[k] != Piece::Kind::wall) continue;
+    const Vec2 x = tall.position[k];
     bool clear = true;
-    for (std::size_t j = 0; j < below && clear; ++j)
-      clear = (wall[j] - tall.position[k]).norm() >= 0.7 * scene.dx;
-    if (clear) wall.push_back(tall.position[k]);
+    if (const std::int64_t c = packingWall.cellOf(x); c >= 0)
+      packingWall.forEachAdjacentRange(c, [&](int begin, int end) {
+        for (int j = begin; j < end; ++j)
+          clear = clear && (wall[packingWall.order()[j]] - x).norm() >= seam;
+      });
+    if (clear) wall.push_back(x);
   }
 
   std::vector<Vec2> fluid = setup.fluid;
@@ -85,10 +96,9 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
     V0_ = scene.dx * scene.dx;  // a lattice cell
   }
 
-  Phase phase = scene.phase;
-  phase.mu = options.alpha * h * scene.phase.c0 / 8.0 * scene.phase.rho0;
-  walls_ = std::make_shared<FixedWalls>(std::move(wall), V0_, h, scene.parameters.kernel, phase,
-                                        Vec2(0.0, -scene.gravity));
+  Scene run = runScene(scene, options, lo, hi);
+  walls_ = std::make_shared<FixedWalls>(std::move(wall), V0_, h, scene.parameters.kernel,
+                                        run.phases[0], Vec2(0.0, -scene.gravity));
 
   const HydrostaticFields hs = hydrostatic(fluid, V0_, scene.phase, scene.gravity, scene.surface);
   Particles<2> y;
@@ -99,7 +109,7 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
     y.phase[i] = 0;
     volume_ += V0_;
   }
-  sim_ = std::make_unique<Simulation<2>>(runScene(scene, options, lo, hi), std::move(y));
+  sim_ = std::make_unique<Simulation<2>>(run, std::move(y));
 
   std::shared_ptr<FixedWalls> walls = walls_;
   sim_->setHalo("fixed_walls_adami2012",
