@@ -228,6 +228,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   }
   wrapPeriodic(yStar_);
   reflectAtWalls(yStar_);
+  if (reflection_) reflection_(yStar_);
   if (auto failure = check(yStar_, t_ + dt, step_ + 1)) return failure;
   std::swap(y_, yStar_);
   t_ += dt, dt_ = dt, limit_ = limit;

@@ -43,6 +43,10 @@ class Simulation {
   // the built-in ones; a failure stops the step as those do.
   using Check = std::function<std::optional<Failure>(const Particles<D>&, double t, long step)>;
   void setCheck(Check c) { check_ = std::move(c); }
+  // A further correction of every new state before the checks (e.g. putting back a particle that
+  // crossed a curved wall by a little), run after the box walls' own reflection.
+  using Reflection = std::function<void(Particles<D>&)>;
+  void setReflection(Reflection r) { reflection_ = std::move(r); }
 
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
@@ -88,6 +92,7 @@ class Simulation {
   Halo halo_;
   std::string haloName_;
   Check check_;
+  Reflection reflection_;
   Particles<D> y_, yStar_;
   Derivatives<D> f_, fStar_;
   InteractionSet<D> set_;
