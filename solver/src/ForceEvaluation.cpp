@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 
+#include "sph/Parallel.hpp"
+
 namespace sph {
 
 // How the loop is laid out (issue 7):
@@ -128,8 +130,10 @@ template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool Var
 void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluation<D>::Workspace& w,
               Derivatives<D>& out) {
   const std::size_t n = set.size();
+  const std::int64_t nSorted = static_cast<std::int64_t>(n);
   double hMax = 0.0;
-  for (double hk : set.h) hMax = std::max(hMax, hk);
+#pragma omp parallel for if (nSorted >= parallelFrom) reduction(max : hMax)
+  for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
   // Cells of half the largest reach, support h_max (h_ij <= h_max): neighbours within two cells.
   // The grid may have 4 cells per point per halving, as many as the full-size cells would.
   w.cells.build(
@@ -161,7 +165,6 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
   out.resize(set.nFluid);
   if (static_cast<int>(w.blocks.size()) < omp_get_max_threads())
     w.blocks.resize(omp_get_max_threads());
-  const std::int64_t nSorted = static_cast<std::int64_t>(n);
   const std::int64_t nWork = static_cast<std::int64_t>(w.fluid.size());
 
 #pragma omp parallel

@@ -1,6 +1,7 @@
 #include "sph/InteractionSet.hpp"
 
 #include "sph/EquationOfState.hpp"
+#include "sph/Parallel.hpp"
 
 namespace sph {
 
@@ -13,7 +14,9 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   set.nFluid = n;
   set.x = fluid.r, set.v = fluid.v, set.rho = fluid.rho, set.m = fluid.m, set.h = fluid.h;
   set.p.resize(n), set.mu.resize(n), set.source.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel for if (count >= parallelFrom)
+  for (std::int64_t i = 0; i < count; ++i) {
     const Phase& ph = phases[fluid.phase[i]];
     set.p[i] = TaitEquationOfState::pressure(fluid.rho[i], ph);
     set.mu[i] = ph.mu;

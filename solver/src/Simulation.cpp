@@ -7,6 +7,7 @@
 
 #include "sph/EquationOfState.hpp"
 #include "sph/InitialParticles.hpp"
+#include "sph/Parallel.hpp"
 
 namespace sph {
 
@@ -68,28 +69,52 @@ std::vector<std::string> Simulation<D>::termNames() const {
 
 template <int D>
 void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& out) {
+  const std::int64_t n = static_cast<std::int64_t>(state.size());
   double hMax = 0;
-  for (double h : state.h) hMax = std::max(hMax, h);
+#pragma omp parallel for if (n >= parallelFrom) reduction(max : hMax)
+  for (std::int64_t i = 0; i < n; ++i) hMax = std::max(hMax, state.h[i]);
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
   const Vec<D> ghostGravity = scene_.hydrostaticGhosts ? g : Vec<D>::Zero();
   buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax, ghostGravity, set_);
   if (halo_) halo_(state, set_);
   forces_(set_, out);
-  for (auto& a : out.dvdt) a += g;  // F/rho in eq. (12)
+#pragma omp parallel for if (n >= parallelFrom)
+  for (std::int64_t i = 0; i < n; ++i) out.dvdt[i] += g;  // F/rho in eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
 }
 
 template <int D>
 double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
+  // Each extreme and the first particle that reaches it: every thread scans a contiguous share,
+  // and the shares combine by (value, then lower index), so any thread count picks the particle
+  // one thread would.
   double hMin = std::numeric_limits<double>::max(), v2Max = 0, a2Max = 0, cMax = 0, nuMax = 0;
   int iH = -1, iV = -1, iA = -1;  // the particles that set each extreme
-  for (std::size_t i = 0; i < y_.size(); ++i) {
-    const int k = static_cast<int>(i);
-    if (y_.h[i] < hMin) hMin = y_.h[i], iH = k;
-    if (y_.v[i].squaredNorm() > v2Max) v2Max = y_.v[i].squaredNorm(), iV = k;
-    if (f_.dvdt[i].squaredNorm() > a2Max) a2Max = f_.dvdt[i].squaredNorm(), iA = k;
+  const std::int64_t n = static_cast<std::int64_t>(y_.size());
+  auto better = [](double x, int i, double best, int bestI, bool larger) {
+    if (i < 0) return false;
+    if (bestI < 0 || (larger ? x > best : x < best)) return true;
+    return x == best && i < bestI;
+  };
+#pragma omp parallel if (n >= parallelFrom)
+  {
+    double h = std::numeric_limits<double>::max(), v2 = 0, a2 = 0;
+    int ih = -1, iv = -1, ia = -1;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t i = 0; i < n; ++i) {
+      const int k = static_cast<int>(i);
+      if (y_.h[i] < h) h = y_.h[i], ih = k;
+      if (y_.v[i].squaredNorm() > v2) v2 = y_.v[i].squaredNorm(), iv = k;
+      if (f_.dvdt[i].squaredNorm() > a2) a2 = f_.dvdt[i].squaredNorm(), ia = k;
+    }
+#pragma omp critical
+    {
+      if (better(h, ih, hMin, iH, false)) hMin = h, iH = ih;
+      if (better(v2, iv, v2Max, iV, true)) v2Max = v2, iV = iv;
+      if (better(a2, ia, a2Max, iA, true)) a2Max = a2, iA = ia;
+    }
   }
   for (const auto& ph : scene_.phases) {
     cMax = std::max(cMax, ph.c0);
@@ -112,14 +137,21 @@ void Simulation<D>::wrapPeriodic(Particles<D>& s) const {
   for (int a = 0; a < D; ++a) {
     if (bounds_.face[a][0] != FaceKind::periodic) continue;
     const double lo = bounds_.lower[a], period = bounds_.upper[a] - lo;
-    for (auto& r : s.r) r[a] = lo + (r[a] - lo) - period * std::floor((r[a] - lo) / period);
+    const std::int64_t n = static_cast<std::int64_t>(s.size());
+#pragma omp parallel for if (n >= parallelFrom)
+    for (std::int64_t i = 0; i < n; ++i)
+      s.r[i][a] = lo + (s.r[i][a] - lo) - period * std::floor((s.r[i][a] - lo) / period);
   }
 }
 
 template <int D>
 void Simulation<D>::reflectAtWalls(Particles<D>& s) {
   const double tolerated = 0.5 * scene_.dx;
-  for (std::size_t i = 0; i < s.size(); ++i)
+  const std::int64_t n = static_cast<std::int64_t>(s.size());
+  long count = 0;
+  double deepest = reflectionDepth_;
+#pragma omp parallel for if (n >= parallelFrom) reduction(+ : count) reduction(max : deepest)
+  for (std::int64_t i = 0; i < n; ++i)
     for (int a = 0; a < D; ++a)
       for (int side = 0; side < 2; ++side) {
         const FaceKind k = bounds_.face[a][side];
@@ -127,52 +159,63 @@ void Simulation<D>::reflectAtWalls(Particles<D>& s) {
         const double wall = side == 0 ? bounds_.lower[a] : bounds_.upper[a];
         const double depth = side == 0 ? wall - s.r[i][a] : s.r[i][a] - wall;
         if (depth <= 0 || depth > tolerated) continue;  // deeper: check() reports the failure
-        reflectionDepth_ = std::max(reflectionDepth_, depth);
+        deepest = std::max(deepest, depth);
         s.r[i][a] = 2 * wall - s.r[i][a];
         s.v[i][a] = 2 * bounds_.wallVelocity[a][side][a] - s.v[i][a];
-        ++reflections_;
+        ++count;
       }
+  reflections_ += count, reflectionDepth_ = deepest;
 }
 
 template <int D>
-std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, long step) const {
-  auto fail = [&](FailureCause cause, std::size_t i, const std::string& what) {
+std::optional<Failure> Simulation<D>::checkParticle(const Particles<D>& s, std::size_t i, double t,
+                                                    long step) const {
+  auto fail = [&](FailureCause cause, const std::string& what) {
     std::ostringstream m;
     m << "step " << step << ", t = " << t << " s, particle " << i << ": " << what;
     return Failure{cause, step, t, static_cast<int>(i), m.str()};
   };
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (!s.r[i].allFinite()) return fail(FailureCause::nan, i, "position is not finite");
-    if (!s.v[i].allFinite()) return fail(FailureCause::nan, i, "velocity is not finite");
-    if (!std::isfinite(s.rho[i])) return fail(FailureCause::nan, i, "density is not finite");
-    if (!std::isfinite(s.h[i]) || s.h[i] <= 0)
-      return fail(FailureCause::nan, i, "smoothing length is not finite and positive");
-    const Phase& ph = scene_.phases[s.phase[i]];
-    const double ratio = s.rho[i] / ph.rho0;
-    if (ratio < scene_.densityBand[0] || ratio > scene_.densityBand[1]) {
+  if (!s.r[i].allFinite()) return fail(FailureCause::nan, "position is not finite");
+  if (!s.v[i].allFinite()) return fail(FailureCause::nan, "velocity is not finite");
+  if (!std::isfinite(s.rho[i])) return fail(FailureCause::nan, "density is not finite");
+  if (!std::isfinite(s.h[i]) || s.h[i] <= 0)
+    return fail(FailureCause::nan, "smoothing length is not finite and positive");
+  const Phase& ph = scene_.phases[s.phase[i]];
+  const double ratio = s.rho[i] / ph.rho0;
+  if (ratio < scene_.densityBand[0] || ratio > scene_.densityBand[1]) {
+    std::ostringstream m;
+    m << "density " << s.rho[i] << " kg/m^3 is outside the band [" << scene_.densityBand[0] << ", "
+      << scene_.densityBand[1] << "] x rho0 = " << ph.rho0 << " of phase '" << ph.name << "'";
+    return fail(FailureCause::density_band, m.str());
+  }
+  for (int a = 0; a < D; ++a) {
+    for (int side = 0; side < 2; ++side) {
+      const FaceKind k = bounds_.face[a][side];
+      if (k == FaceKind::periodic) continue;
+      const bool out = side == 0 ? s.r[i][a] < bounds_.lower[a] : s.r[i][a] > bounds_.upper[a];
+      if (!out) continue;
       std::ostringstream m;
-      m << "density " << s.rho[i] << " kg/m^3 is outside the band [" << scene_.densityBand[0]
-        << ", " << scene_.densityBand[1] << "] x rho0 = " << ph.rho0 << " of phase '" << ph.name
-        << "'";
-      return fail(FailureCause::density_band, i, m.str());
-    }
-    for (int a = 0; a < D; ++a) {
-      for (int side = 0; side < 2; ++side) {
-        const FaceKind k = bounds_.face[a][side];
-        if (k == FaceKind::periodic) continue;
-        const bool out = side == 0 ? s.r[i][a] < bounds_.lower[a] : s.r[i][a] > bounds_.upper[a];
-        if (!out) continue;
-        std::ostringstream m;
-        const char* axis[3] = {"x", "y", "z"};
-        m << "position " << axis[a] << " = " << s.r[i][a] << " m is beyond the "
-          << (side == 0 ? "lower " : "upper ") << axis[a] << " face at "
-          << (side == 0 ? bounds_.lower[a] : bounds_.upper[a]) << " m";
-        if (Boundaries<D>::isWall(k))
-          return fail(FailureCause::wall_penetration, i, m.str() + " (crossed the wall)");
-        return fail(FailureCause::escaped_domain, i, m.str() + " (left the domain)");
-      }
+      const char* axis[3] = {"x", "y", "z"};
+      m << "position " << axis[a] << " = " << s.r[i][a] << " m is beyond the "
+        << (side == 0 ? "lower " : "upper ") << axis[a] << " face at "
+        << (side == 0 ? bounds_.lower[a] : bounds_.upper[a]) << " m";
+      if (Boundaries<D>::isWall(k))
+        return fail(FailureCause::wall_penetration, m.str() + " (crossed the wall)");
+      return fail(FailureCause::escaped_domain, m.str() + " (left the domain)");
     }
   }
+  return std::nullopt;
+}
+
+template <int D>
+std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, long step) const {
+  // The first bad particle by index, whatever the thread count (a min over the shares).
+  const std::int64_t n = static_cast<std::int64_t>(s.size());
+  std::int64_t first = n;
+#pragma omp parallel for if (n >= parallelFrom) reduction(min : first)
+  for (std::int64_t i = 0; i < n; ++i)
+    if (i < first && checkParticle(s, i, t, step)) first = i;
+  if (first < n) return checkParticle(s, first, t, step);
   if (check_) return check_(s, t, step);
   return std::nullopt;
 }
@@ -211,7 +254,10 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   yStar_.resize(n);
   std::copy(y_.m.begin(), y_.m.end(), yStar_.m.begin());
   std::copy(y_.phase.begin(), y_.phase.end(), yStar_.phase.begin());
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::int64_t count = static_cast<std::int64_t>(n);
+  const bool parallel = count >= parallelFrom;
+#pragma omp parallel for if (parallel)
+  for (std::int64_t i = 0; i < count; ++i) {
     yStar_.r[i] = y_.r[i] + dt * y_.v[i];
     yStar_.v[i] = y_.v[i] + dt * f_.dvdt[i];
     yStar_.rho[i] = y_.rho[i] + dt * f_.drhodt[i];
@@ -220,7 +266,8 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   wrapPeriodic(yStar_);
   rates(yStar_, t_ + dt, fStar_);
   // Corrector: the trapezoidal rule over the two rates. Positions first: they need v*.
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for if (parallel)
+  for (std::int64_t i = 0; i < count; ++i) {
     yStar_.r[i] = y_.r[i] + 0.5 * dt * (y_.v[i] + yStar_.v[i]);
     yStar_.v[i] = y_.v[i] + 0.5 * dt * (f_.dvdt[i] + fStar_.dvdt[i]);
     yStar_.rho[i] = y_.rho[i] + 0.5 * dt * (f_.drhodt[i] + fStar_.drhodt[i]);
@@ -234,7 +281,8 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   t_ += dt, dt_ = dt, limit_ = limit;
   ++step_;
   rates(y_, t_, f_);
-  for (std::size_t i = 0; i < n; ++i) y_.p[i] = set_.p[i];
+#pragma omp parallel for if (parallel)
+  for (std::int64_t i = 0; i < count; ++i) y_.p[i] = set_.p[i];
   return std::nullopt;
 }
 

@@ -9,12 +9,15 @@
 // per-cell bookkeeping. With cells of half the reach, the neighbours lie within two cells
 // (forEachAdjacentRow<2>: 5^(D-1) rows of 5 cells), a tighter box around the reach's sphere:
 // in 2-D 25/4 against 9 times the squared reach, so fewer candidates to test.
+#include <omp.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "sph/Parallel.hpp"
 #include "sph/Vector.hpp"
 
 namespace sph {
@@ -32,10 +35,12 @@ class CellList {
   // `cellsPerPoint` bounds the grid's size (cells are doubled until it holds).
   template <class Pos>
   void build(std::size_t n, Pos&& pos, double cellSize, int cellsPerPoint = 4) {
-    std::array<double, D> lo{}, hi{};
-    if (n > 0)
-      for (int a = 0; a < D; ++a) lo[a] = hi[a] = pos(0, a);
-    for (std::size_t i = 1; i < n; ++i)
+    const std::int64_t count = static_cast<std::int64_t>(n);
+    const bool parallel = count >= parallelFrom;
+    double lo[D], hi[D];
+    for (int a = 0; a < D; ++a) lo[a] = n > 0 ? pos(0, a) : 0.0, hi[a] = lo[a];
+#pragma omp parallel for if (parallel) reduction(min : lo[:D]) reduction(max : hi[:D])
+    for (std::int64_t i = 1; i < count; ++i)
       for (int a = 0; a < D; ++a)
         lo[a] = std::min(lo[a], pos(i, a)), hi[a] = std::max(hi[a], pos(i, a));
     for (int a = 0; a < D; ++a) lo_[a] = lo[a];
@@ -52,39 +57,74 @@ class CellList {
     }
     std::int64_t total = 1;
     for (int a = 0; a < D; ++a) total *= dims_[a];
-    start_.assign(total + 1, 0);
     cellOf_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      std::int64_t idx = 0, stride = 1;
-      for (int a = 0; a < D; ++a) {
-        int k = static_cast<int>((pos(i, a) - lo_[a]) / size_);
-        k = std::clamp(k, 0, dims_[a] - 1);
-        idx += k * stride;
-        stride *= dims_[a];
-      }
-      cellOf_[i] = idx;
-      ++start_[idx + 1];
-    }
-    for (std::int64_t c = 0; c < total; ++c) start_[c + 1] += start_[c];
     order_.resize(n);
     sortedCell_.resize(n);
-    fill_.assign(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) {
-      const int k = fill_[cellOf_[i]]++;
-      order_[k] = static_cast<int>(i);
-      sortedCell_[k] = cellOf_[i];
+    // A counting sort by cell, stable (points of a cell in increasing index): each thread counts
+    // and places a fixed, contiguous share of the points, and thread t's points of a cell go after
+    // those of threads 0 .. t-1, so the order is the serial one whatever the thread count.
+    const int threads = parallel ? omp_get_max_threads() : 1;
+    counts_.assign(static_cast<std::size_t>(threads) * (total + 1), 0);
+    start_.assign(total + 1, 0);
+#pragma omp parallel num_threads(threads) if (parallel)
+    {
+      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+      const std::int64_t begin = count * t / nt, end = count * (t + 1) / nt;
+      int* mine = counts_.data() + static_cast<std::size_t>(t) * (total + 1);
+      for (std::int64_t i = begin; i < end; ++i) {
+        std::int64_t idx = 0, stride = 1;
+        for (int a = 0; a < D; ++a) {
+          int k = static_cast<int>((pos(i, a) - lo_[a]) / size_);
+          k = std::clamp(k, 0, dims_[a] - 1);
+          idx += k * stride;
+          stride *= dims_[a];
+        }
+        cellOf_[i] = idx;
+        ++mine[idx];
+      }
+#pragma omp barrier
+#pragma omp single
+      {  // cell c's points start after all points of cells < c; thread t's after threads < t's
+        int running = 0;
+        for (std::int64_t c = 0; c < total; ++c) {
+          start_[c] = running;
+          for (int u = 0; u < nt; ++u) {
+            int& k = counts_[static_cast<std::size_t>(u) * (total + 1) + c];
+            const int here = k;
+            k = running, running += here;
+          }
+        }
+        start_[total] = running;
+      }
+      for (std::int64_t i = begin; i < end; ++i) {
+        const int k = mine[cellOf_[i]]++;
+        order_[k] = static_cast<int>(i);
+        sortedCell_[k] = cellOf_[i];
+      }
     }
   }
 
   // order()[k] is the point at position k of the cell-sorted sequence.
-  const std::vector<int>& order() const { return order_; }
+  const std::vector<int>& order() const {
+    return order_;
+  }
   // The cell of the point at sorted position k.
-  std::int64_t sortedCell(int k) const { return sortedCell_[k]; }
-  std::int64_t cells() const { return static_cast<std::int64_t>(start_.size()) - 1; }
-  int cellBegin(std::int64_t c) const { return start_[c]; }
-  int cellEnd(std::int64_t c) const { return start_[c + 1]; }
+  std::int64_t sortedCell(int k) const {
+    return sortedCell_[k];
+  }
+  std::int64_t cells() const {
+    return static_cast<std::int64_t>(start_.size()) - 1;
+  }
+  int cellBegin(std::int64_t c) const {
+    return start_[c];
+  }
+  int cellEnd(std::int64_t c) const {
+    return start_[c + 1];
+  }
   // The cell side actually used (cellSize, doubled as often as the O(N) guard needed).
-  double cellSize() const { return size_; }
+  double cellSize() const {
+    return size_;
+  }
 
   // The cell for a query point x that need not be one of the built points: -1 when x lies more
   // than one cell beyond the grid (no point within cellSize() of it); otherwise x's cell clamped
@@ -166,7 +206,7 @@ class CellList {
   Vec<D> lo_ = Vec<D>::Zero();
   double size_ = 1.0;
   std::array<int, D> dims_{};
-  std::vector<int> start_, order_, fill_;
+  std::vector<int> start_, order_, counts_;
   std::vector<std::int64_t> cellOf_, sortedCell_;
 };
 

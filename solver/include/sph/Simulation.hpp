@@ -82,6 +82,8 @@ class Simulation {
   // acceleration.
   double timeStep(TimeStepLimit& limit, int& particle) const;
   std::optional<Failure> check(const Particles<D>& s, double t, long step) const;
+  std::optional<Failure> checkParticle(const Particles<D>& s, std::size_t i, double t,
+                                       long step) const;
   void wrapPeriodic(Particles<D>& s) const;
   void reflectAtWalls(Particles<D>& s);
 
