@@ -172,16 +172,20 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
 #pragma omp for schedule(static)
     for (std::int64_t k = 0; k < nSorted; ++k) {
       const int s = order[k];
-      for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a], w.v[a][k] = set.v[s][a];
-      const double rho = set.rho[s], rhoInv = 1.0 / rho;
-      w.rho[k] = rho, w.rhoInv[k] = rhoInv, w.m[k] = set.m[s], w.h[k] = set.h[s];
-      w.pOverRho2[k] = set.p[s] * rhoInv * rhoInv;
-      w.mu[k] = set.mu[s], w.mOverRho[k] = set.m[s] * rhoInv;
+      // Pass 1 reads x and h by field; the rest is read from the records in 1-D and 2-D (v, rho,
+      // p/rho^2, m by field only in 3-D).
+      for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a];
+      const double rho = set.rho[s], rhoInv = 1.0 / rho, m = set.m[s], h = set.h[s];
+      const double pr = set.p[s] * rhoInv * rhoInv;
+      w.h[k] = h, w.rhoInv[k] = rhoInv, w.mu[k] = set.mu[s], w.mOverRho[k] = m * rhoInv;
       if constexpr (D <= 2) {
         double* r = w.record + recordSize * k;
-        r[0] = w.x[0][k], r[1] = D > 1 ? w.x[D - 1][k] : 0.0;
-        r[2] = w.v[0][k], r[3] = D > 1 ? w.v[D - 1][k] : 0.0;
-        r[4] = w.h[k], r[5] = rho, r[6] = w.pOverRho2[k], r[7] = w.m[k];
+        r[0] = set.x[s][0], r[1] = D > 1 ? set.x[s][D - 1] : 0.0;
+        r[2] = set.v[s][0], r[3] = D > 1 ? set.v[s][D - 1] : 0.0;
+        r[4] = h, r[5] = rho, r[6] = pr, r[7] = m;
+      } else {
+        for (int a = 0; a < D; ++a) w.v[a][k] = set.v[s][a];
+        w.rho[k] = rho, w.m[k] = m, w.pOverRho2[k] = pr;
       }
     }
     const double* xs[3] = {};  // three components whatever D, for the pair loop's r_ij, v_ij
@@ -213,9 +217,17 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
         blocksOf = c;
       }
       Vd xi[3], vi[3];
-      for (int a = 0; a < 3; ++a)
-        xi[a] = broadcast(a < D ? xs[a][i] : 0.0), vi[a] = broadcast(a < D ? vs[a][i] : 0.0);
-      const double hi = hs[i], rhoi = rhos[i], pri = prs[i];
+      double rhoi, pri;
+      for (int a = 0; a < 3; ++a) xi[a] = broadcast(a < D ? xs[a][i] : 0.0);
+      if constexpr (D <= 2) {
+        const double* r = w.record + recordSize * i;
+        vi[0] = broadcast(r[2]), vi[1] = broadcast(r[3]), vi[2] = Vd{};
+        rhoi = r[5], pri = r[6];
+      } else {
+        for (int a = 0; a < 3; ++a) vi[a] = broadcast(vs[a][i]);
+        rhoi = rhos[i], pri = prs[i];
+      }
+      const double hi = hs[i];
       const double muRhoInvi = mus[i] * w.rhoInv[i], rhoInvi = w.rhoInv[i];
       Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
 
