@@ -23,7 +23,7 @@ ctest --test-dir "$build" -L "$tier" --output-on-failure -j2 --output-junit ctes
 tests=$?
 echo "tests took $(( $(date +%s) - start )) s"
 extra=()
-[ -d "$build/perf" ] && extra+=(--perf "$build/perf")
+[ -d "$build/perf-results" ] && extra+=(--perf "$build/perf-results")
 [ -d "$build/stability" ] && extra+=(--stability "$build/stability")
 /usr/bin/python3 reports/vv_report.py --runs "$build/runs" --results "$build/results" \
   --out reports/out "${report_flags[@]}" "${extra[@]}"
