@@ -84,6 +84,14 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   tankCmd->add_option("--threads", tankThreads, "OpenMP threads (default: all)")
       ->check(CLI::NonNegativeNumber);
+  tankCmd
+      ->add_option("--restitution", tank.restitution,
+                   "restitution of the wall reflections (0: onto the wall line; 1: mirror)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  bool tankNoReflect = false;
+  tankCmd->add_flag("--no-reflect", tankNoReflect,
+                    "do not reflect particles that end a step < dx/2 beyond a wall line");
 
   try {
     app.parse(argc, argv);
@@ -103,14 +111,22 @@ int main(int argc, char** argv) {
       if (tankThreads > 0) omp_set_num_threads(tankThreads);
       sph::packing::PackingScene ps = sph::packing::readPackingScene(scenePath);
       if (tankHOverDx > 0) ps.dx = ps.lengthScale / tankHOverDx;
+      tank.reflect = !tankNoReflect;
       sph::packing::TankRun run(ps, tank);
-      std::printf("t_sqrt_g_over_H,max_u_over_sqrt_gH,Ek_over_rho0_g_H_V\n");
+      // The last two columns: the wall reflections so far (TankRun::wallReflections) and the
+      // deepest of them in units of dx.
+      std::printf(
+          "t_sqrt_g_over_H,max_u_over_sqrt_gH,Ek_over_rho0_g_H_V,wall_reflections,"
+          "max_reflection_depth_over_dx\n");
       double next = 0.0;
       const auto failure = run.runTo(tankEnd, [&](const sph::packing::TankSample& x) {
         if (x.t + 1e-12 < next) return;
-        std::printf("%.6g,%.6e,%.6e\n", x.t, x.maxSpeed, x.kinetic);
+        std::printf("%.6g,%.6e,%.6e,%ld,%.4f\n", x.t, x.maxSpeed, x.kinetic, run.wallReflections(),
+                    run.maxReflectionDepth() / ps.dx);
         next += tankEvery;
       });
+      std::cerr << "wall reflections: " << run.wallReflections()
+                << ", deepest: " << run.maxReflectionDepth() / ps.dx << " dx\n";
       if (failure) {
         std::cerr << "error: " << sph::name(failure->cause) << ": " << failure->message << "\n";
         return sph::exitNumericalFailure;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "Results.hpp"
 #include "TankRuns.hpp"
@@ -71,6 +72,39 @@ TEST(FixedWalls, PenetrationIsAFailure) {
   EXPECT_NE(failure->message.find("beyond the tank's wall"), std::string::npos) << failure->message;
 }
 
+// A fluid particle that ends a step less than dx/2 beyond the wall line is put back and counted
+// (TankRun::wallReflections): by default onto the wall line with its normal velocity removed
+// (restitution 0), with restitution 1 mirrored across it with the normal velocity reversed, as
+// at the box walls (Simulation::reflectAtWalls); switched off, it is left where it is.
+TEST(FixedWalls, ShallowCrossingIsPutBack) {
+  const PackingScene s = trapezoidalTankScene(25.0);
+  const double dx = s.dx;
+  // Particle 7, 0.3 dx below the bottom, moving down; one step moves it by about 1e-3 dx.
+  auto stepFrom = [&](const TankRunOptions& o) {
+    auto run = std::make_unique<TankRun>(s, o);
+    run->simulation().particles().r[7] = Vec<2>(0.3, -0.3 * dx);
+    run->simulation().particles().v[7] = Vec<2>(0.0, -0.05);
+    EXPECT_FALSE(run->simulation().advance());
+    return run;
+  };
+  TankRunOptions o;
+  const auto put = stepFrom(o);
+  EXPECT_GE(put->wallReflections(), 1);
+  EXPECT_NEAR(put->maxReflectionDepth(), 0.3 * dx, 0.01 * dx);
+  EXPECT_EQ(put->simulation().particles().r[7].y(), 0.0);  // on the bottom's line
+  EXPECT_NEAR(put->simulation().particles().r[7].x(), 0.3, 0.01 * dx);
+  EXPECT_NEAR(put->simulation().particles().v[7].y(), 0.0, 1e-12);
+  o.restitution = 1.0;
+  const auto mirrored = stepFrom(o);
+  EXPECT_GE(mirrored->wallReflections(), 1);
+  EXPECT_NEAR(mirrored->simulation().particles().r[7].y(), 0.3 * dx, 0.01 * dx);
+  EXPECT_GT(mirrored->simulation().particles().v[7].y(), 0.0);
+  o.reflect = false;
+  const auto plain = stepFrom(o);
+  EXPECT_LT(plain->simulation().particles().r[7].y(), -0.29 * dx);
+  EXPECT_EQ(plain->wallReflections(), 0);
+}
+
 // Colagrossi et al. (2012), section 3.1: from a packed start the hydrostatic tank stays still
 // (to t sqrt(g/H) = 10, about 10 s here).
 TEST(TrapezoidalTankRun, PackedStartHoldsStillAtHOverDx25) {
@@ -102,6 +136,10 @@ TEST(TrapezoidalTankRun, PackedStartHoldsStillAtHOverDx25) {
                       "acoustic pressure rho0 c0 max|u|, see comment"));
   EXPECT_TRUE(r.check("deepest excursion beyond the wall line / dx", t.maxDepth / t.dx, "<=", 0.0,
                       "fluid stays inside the tank (wall_penetration beyond dx/2)"));
+  // Nor does it reach the wall line and get reflected (TankRun::wallReflections).
+  EXPECT_TRUE(r.check("wall reflections, packed start, H/dx = 25",
+                      static_cast<double>(t.reflections), "<=", 0.0,
+                      "fluid stays inside the tank (measured: packed starts never cross)"));
 }
 
 }  // namespace

@@ -82,6 +82,24 @@ TEST(PackingGeometry, SolidLayersLineWallsAndSurface) {
   checkLayers(r, belowSurface(bumpy, 1.0), 0.05, 4, "tank with arcs");
 }
 
+// Region::nearest: the boundary point the distance is measured to, on a segment, an arc and a
+// vertex (used to reflect particles back across curved walls, TankRun).
+TEST(PackingGeometry, NearestBoundaryPoint) {
+  const Region trap(trapezoid);
+  // Beyond the 45-degree wall x - y = 0.5 by 0.01 along its outward normal (1, -1)/sqrt(2).
+  const Vec2 onSlope(1.2, 0.7), out = onSlope + 0.01 * Vec2(1.0, -1.0).normalized();
+  EXPECT_NEAR((trap.nearest(out) - onSlope).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((trap.nearest(out) - out).norm(), trap.distance(out), 1e-14);
+  // Below the bottom's left end: the vertex (0, 0).
+  EXPECT_NEAR((trap.nearest(Vec2(-0.01, -0.02)) - Vec2(0.0, 0.0)).norm(), 0.0, 1e-14);
+  // Outside a half disc's arc: on the radius through the point.
+  const Region bowl(std::vector<Piece>{arc({-1.0, 0.0}, {1.0, 0.0}, {0.0, 0.0}, true),
+                                       segment({1.0, 0.0}, {-1.0, 0.0})});
+  const Vec2 p = 1.03 * Vec2(std::cos(-1.0), std::sin(-1.0));
+  EXPECT_NEAR((bowl.nearest(p) - p / 1.03).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((bowl.nearest(p) - p).norm(), bowl.distance(p), 1e-14);
+}
+
 TEST(PackingGeometry, SceneErrorsNameFileAndKey) {
   const std::string head = "name = \"t\"\n[fluid]\nc0 = 10.0\n[packing]\ndx = 0.1\n";
   auto message = [&](const std::string& geometry) {

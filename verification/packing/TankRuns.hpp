@@ -1,7 +1,7 @@
 #pragma once
 // Hydrostatic tank runs of Colagrossi et al. (2012), sections 3.1-3.2 (TankRun), sampled for the
-// tests: max|u| and kinetic energy histories, the pressure next to the sloping wall, and how far
-// any fluid particle got beyond the wall line.
+// tests: max|u| and kinetic energy histories, the pressure next to the sloping wall, how far any
+// fluid particle got beyond the wall line, and the reflections back across it.
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -26,6 +26,8 @@ struct TankHistory {
   double maxSpeedOverall = 0.0;              // over all steps
   double slopePressureError = 0.0;           // at the end, see slopePressureError()
   double maxDepth = 0.0;                     // deepest position beyond the wall line [m]
+  long reflections = 0;                      // TankRun::wallReflections
+  double maxReflectionDepth = 0.0;           // TankRun::maxReflectionDepth [m]
   double dx = 0.0, seconds = 0.0;
   int packingIterations = 0;
   long steps = 0;
@@ -69,6 +71,8 @@ inline TankHistory runTank(const PackingScene& s, TankRunOptions o, double tEnd,
   });
   h.slopePressureError = slopePressureError(run, s);
   h.steps = run.simulation().step();
+  h.reflections = run.wallReflections();
+  h.maxReflectionDepth = run.maxReflectionDepth();
   h.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return h;
 }

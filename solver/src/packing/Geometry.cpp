@@ -135,6 +135,18 @@ double Piece::distance(const Vec2& p) const {
   return std::min((p - a).norm(), (p - b).norm());
 }
 
+Vec2 Piece::nearest(const Vec2& p) const {
+  if (!arc) {
+    const Vec2 ab = b - a;
+    return a + std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) * ab;
+  }
+  const Vec2 r = p - center;
+  const double theta = std::atan2(r.y(), r.x());
+  if (angleFrom(theta0, theta, sgn(sweep)) <= std::abs(sweep))
+    return center + radius * Vec2(std::cos(theta), std::sin(theta));
+  return (p - a).squaredNorm() <= (p - b).squaredNorm() ? a : b;
+}
+
 Piece Piece::reversed() const {
   Piece q = *this;
   std::swap(q.a, q.b);
@@ -184,6 +196,14 @@ double Region::distance(const Vec2& p) const {
   double d = INFINITY;
   for (const Piece& q : pieces_) d = std::min(d, q.distance(p));
   return d;
+}
+
+Vec2 Region::nearest(const Vec2& p) const {
+  double d = INFINITY;
+  Vec2 best = p;
+  for (const Piece& q : pieces_)
+    if (const double e = q.distance(p); e < d) d = e, best = q.nearest(p);
+  return best;
 }
 
 void Region::bounds(Vec2& lo, Vec2& hi) const {

@@ -30,6 +30,7 @@ struct Piece {
     return Vec2(t.y(), -t.x());
   }
   double distance(const Vec2& p) const;  // Euclidean distance from p to the piece
+  Vec2 nearest(const Vec2& p) const;     // the point of the piece nearest to p
   Piece reversed() const;
 };
 
@@ -48,6 +49,7 @@ class Region {
   double area() const;                   // Green's theorem, exact for segments and arcs
   bool contains(const Vec2& p) const;    // crossing number, exact for arcs
   double distance(const Vec2& p) const;  // to the boundary
+  Vec2 nearest(const Vec2& p) const;     // the boundary point nearest to p
   void bounds(Vec2& lo, Vec2& hi) const;
 
  private:
