@@ -10,13 +10,13 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
                          const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
                          InteractionSet<D>& set) {
   const std::size_t n = fluid.size();
-  set.clear();
+  set.resize(n);  // the fluid entries; the halo is appended below
   set.nFluid = n;
-  set.x = fluid.r, set.v = fluid.v, set.rho = fluid.rho, set.m = fluid.m, set.h = fluid.h;
-  set.p.resize(n), set.mu.resize(n), set.source.resize(n);
   const std::int64_t count = static_cast<std::int64_t>(n);
 #pragma omp parallel for if (count >= parallelFrom)
   for (std::int64_t i = 0; i < count; ++i) {
+    set.x[i] = fluid.r[i], set.v[i] = fluid.v[i], set.rho[i] = fluid.rho[i];
+    set.m[i] = fluid.m[i], set.h[i] = fluid.h[i];
     const Phase& ph = phases[fluid.phase[i]];
     set.p[i] = TaitEquationOfState::pressure(fluid.rho[i], ph);
     set.mu[i] = ph.mu;

@@ -20,8 +20,10 @@ struct InteractionSet {
   std::size_t nFluid = 0;
 
   std::size_t size() const { return x.size(); }
-  void clear() {
-    x.clear(), v.clear(), rho.clear(), p.clear(), m.clear(), h.clear(), mu.clear(), source.clear();
+  void clear() { resize(0); }
+  void resize(std::size_t n) {
+    x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
+    source.resize(n);
   }
   void push(std::size_t k, const Vec<D>& xk, const Vec<D>& vk) {
     x.push_back(xk), v.push_back(vk), rho.push_back(rho[k]), p.push_back(p[k]), m.push_back(m[k]);
