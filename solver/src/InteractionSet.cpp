@@ -1,5 +1,7 @@
 #include "sph/InteractionSet.hpp"
 
+#include <omp.h>
+
 #include "sph/EquationOfState.hpp"
 #include "sph/Parallel.hpp"
 
@@ -22,16 +24,34 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
     set.mu[i] = ph.mu;
     set.source[i] = static_cast<int>(i);
   }
+  // Per axis: the entries within reach of a face, found in parallel (each thread a contiguous
+  // share, listed in thread order: the serial order), then their images appended.
+  const int threads = omp_get_max_threads();
+  if (static_cast<int>(set.nearFace.size()) < threads) set.nearFace.resize(threads);
   for (int a = 0; a < D; ++a) {
     const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
-    const std::size_t count = set.size();
-    for (std::size_t k = 0; k < count; ++k) {
-      for (int side = 0; side < 2; ++side) {
+    const std::int64_t scanned = static_cast<std::int64_t>(set.size());
+    int used = 1;
+#pragma omp parallel if (scanned >= parallelFrom)
+    {
+      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+#pragma omp single
+      used = nt;
+      auto& mine = set.nearFace[t];
+      mine.clear();
+      for (std::int64_t k = scanned * t / nt; k < scanned * (t + 1) / nt; ++k)
+        for (int side = 0; side < 2; ++side) {
+          if (bounds.face[a][side] == FaceKind::open) continue;
+          const double xa = set.x[k][a];
+          if ((side == 0 ? xa - lo : hi - xa) < reach) mine.push_back(2 * k + side);
+        }
+    }
+    for (int t = 0; t < used; ++t)
+      for (const std::int64_t code : set.nearFace[t]) {
+        const std::size_t k = static_cast<std::size_t>(code / 2);
+        const int side = static_cast<int>(code % 2);
         const FaceKind kind = bounds.face[a][side];
-        if (kind == FaceKind::open) continue;
         const double xa = set.x[k][a];
-        const double distance = side == 0 ? xa - lo : hi - xa;
-        if (distance >= reach) continue;
         Vec<D> xg = set.x[k], vg = set.v[k];
         double pg = set.p[k];
         if (kind == FaceKind::periodic) {
@@ -50,7 +70,6 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
         set.push(k, xg, vg);
         set.p.back() = pg;
       }
-    }
   }
 }
 

@@ -3,6 +3,7 @@
 // entries), then their periodic images and ghost-wall mirrors (the halo). Rebuilt before every
 // force evaluation from the current fluid state.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "sph/Boundaries.hpp"
@@ -18,6 +19,8 @@ struct InteractionSet {
   std::vector<double> rho, p, m, h, mu;
   std::vector<int> source;  // the fluid particle an entry stands for
   std::size_t nFluid = 0;
+  // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step).
+  std::vector<std::vector<std::int64_t>> nearFace;
 
   std::size_t size() const { return x.size(); }
   void clear() { resize(0); }
