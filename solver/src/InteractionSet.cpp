@@ -25,18 +25,16 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
     set.source[i] = static_cast<int>(i);
   }
   // Per axis: the entries within reach of a face, found in parallel (each thread a contiguous
-  // share, listed in thread order: the serial order), then their images appended.
+  // share, listed in thread order: the serial order), then their images written after the
+  // entries so far, each thread's at its list's offset.
   const int threads = omp_get_max_threads();
   if (static_cast<int>(set.nearFace.size()) < threads) set.nearFace.resize(threads);
   for (int a = 0; a < D; ++a) {
     const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
     const std::int64_t scanned = static_cast<std::int64_t>(set.size());
-    int used = 1;
 #pragma omp parallel if (scanned >= parallelFrom)
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-#pragma omp single
-      used = nt;
       auto& mine = set.nearFace[t];
       mine.clear();
       for (std::int64_t k = scanned * t / nt; k < scanned * (t + 1) / nt; ++k)
@@ -45,9 +43,16 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
           const double xa = set.x[k][a];
           if ((side == 0 ? xa - lo : hi - xa) < reach) mine.push_back(2 * k + side);
         }
-    }
-    for (int t = 0; t < used; ++t)
-      for (const std::int64_t code : set.nearFace[t]) {
+#pragma omp barrier
+#pragma omp single
+      {
+        std::size_t total = static_cast<std::size_t>(scanned);
+        for (int u = 0; u < nt; ++u) total += set.nearFace[u].size();
+        set.resize(total);
+      }
+      std::size_t g = static_cast<std::size_t>(scanned);  // this thread's first image
+      for (int u = 0; u < t; ++u) g += set.nearFace[u].size();
+      for (const std::int64_t code : mine) {
         const std::size_t k = static_cast<std::size_t>(code / 2);
         const int side = static_cast<int>(code % 2);
         const FaceKind kind = bounds.face[a][side];
@@ -67,9 +72,12 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
             vg[a] = 2.0 * vw[a] - vg[a];
           }
         }
-        set.push(k, xg, vg);
-        set.p.back() = pg;
+        set.x[g] = xg, set.v[g] = vg, set.p[g] = pg;
+        set.rho[g] = set.rho[k], set.m[g] = set.m[k], set.h[g] = set.h[k], set.mu[g] = set.mu[k];
+        set.source[g] = set.source[k];
+        ++g;
       }
+    }
   }
 }
 

@@ -28,10 +28,6 @@ struct InteractionSet {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
     source.resize(n);
   }
-  void push(std::size_t k, const Vec<D>& xk, const Vec<D>& vk) {
-    x.push_back(xk), v.push_back(vk), rho.push_back(rho[k]), p.push_back(p[k]), m.push_back(m[k]);
-    h.push_back(h[k]), mu.push_back(mu[k]), source.push_back(source[k]);
-  }
 };
 
 // Copies the fluid state (pressure from the Tait EOS, viscosity from the phase) into `set`, then
