@@ -94,7 +94,8 @@ inline double sum(Vd x) {  // the lanes, in a fixed order
 template <int D>
 struct ForceEvaluation<D>::Workspace {
   CellList<D> cells;
-  // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k.
+  // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k (v, rho, p/rho^2, m in 3-D
+  // only).
   std::array<std::vector<double>, D> x, v;
   std::vector<double> h, rho, rhoInv, pOverRho2, m, mOverRho, mu;
   // For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho, p/rho^2, m}
@@ -140,9 +141,12 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
       n, [&](std::size_t i, int a) { return set.x[i][a]; }, 0.5 * Kernel::support * hMax, 4 << D);
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
-  for (int a = 0; a < D; ++a) w.x[a].resize(nPadded), w.v[a].resize(nPadded);
-  w.h.resize(nPadded), w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
-  w.mu.resize(nPadded), w.rhoInv.resize(nPadded), w.mOverRho.resize(nPadded);
+  for (int a = 0; a < D; ++a) w.x[a].resize(nPadded);
+  w.h.resize(nPadded), w.mu.resize(nPadded), w.rhoInv.resize(nPadded), w.mOverRho.resize(nPadded);
+  if constexpr (D > 2) {  // in 1-D and 2-D these fields are read from the records only
+    for (int a = 0; a < D; ++a) w.v[a].resize(nPadded);
+    w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
+  }
   constexpr int recordSize = 8;
   if constexpr (D <= 2) {
     w.recordStore.resize(recordSize * nPadded + 8);
@@ -150,12 +154,14 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
     w.record = w.recordStore.data() + (64 - address % 64) % 64 / sizeof(double);
   }
   for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
-    for (int a = 0; a < D; ++a) w.x[a][k] = 1e100, w.v[a][k] = 0.0;
-    w.h[k] = hMax, w.rho[k] = 1.0, w.rhoInv[k] = 1.0, w.pOverRho2[k] = 0.0, w.m[k] = 0.0;
-    w.mu[k] = 0.0, w.mOverRho[k] = 0.0;
+    for (int a = 0; a < D; ++a) w.x[a][k] = 1e100;
+    w.h[k] = hMax, w.rhoInv[k] = 1.0, w.mu[k] = 0.0, w.mOverRho[k] = 0.0;
     if constexpr (D <= 2) {
       double* r = w.record + recordSize * k;
       r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
+    } else {
+      for (int a = 0; a < D; ++a) w.v[a][k] = 0.0;
+      w.rho[k] = 1.0, w.pOverRho2[k] = 0.0, w.m[k] = 0.0;
     }
   }
   const int nFluid = static_cast<int>(set.nFluid);
