@@ -13,25 +13,26 @@
 namespace sph {
 
 // How the loop is laid out (issue 7):
-// * The interaction set is copied, cell-sorted, into one array per scalar field (structure of
-//   arrays), with the per-particle factors of the pair sums precomputed (p/rho^2, 1/rho, m/rho).
-//   The arrays end in `lanes` far-away, massless entries, so that a vector may read past the end.
-// * Cells are half the reach, so a fluid particle's candidates are the 5^(D-1) rows of five cells
-//   around it (CellList::forEachAdjacentRow<2>), each a contiguous range of the sorted arrays:
-//   in 2-D about 45 candidates for 20 neighbours, against 66 in 3 rows of 3 full-size cells.
-//   The rows are cut into blocks of `lanes` consecutive entries, once per cell (the particles of
-//   a cell share them).
-// * Pass 1 tests a block at a time (one vector of `lanes` doubles, GCC vector extensions) and
-//   appends the neighbours (inside the row, 0 < r_ij < support h_ij) to a per-thread list, in
-//   sorted order. Pass 2 evaluates the terms on that list, `lanes` neighbours at a time, padded
-//   with a far-away massless entry. Without the list every candidate would go through the square
-//   root and the division, which share one unit and bound the loop (~15 cycles a vector on the
-//   reference machine).
-// * Lane l of every vector adds into lane l of the accumulators (kept in registers), and the
-//   lanes are summed in a fixed order at the end. So each particle's rates are its own
-//   neighbours' sum in an order fixed by the cell list alone, whatever the thread count, and no
-//   thread writes another particle's rates (no atomics). Pass 2 has no branch: the
-//   approaching-pair test of eq. 10 is a select.
+// * The interaction set is copied, cell-sorted, into arrays by field (x, h: pass 1) and records
+//   by entry (pass 2), with the per-particle factors of the pair sums precomputed (p/rho^2,
+//   1/rho, m/rho). The arrays end in `lanes` far-away, massless entries, so that a vector may
+//   read past the end.
+// * Each pair once (Newton's third law): eq. 11-13 give j the same pair values as i, up to the
+//   masses and the sign of grad W, so the pair's square root, division and kernel are shared.
+//   Particle i takes the pairs with the entries j after it in the sorted order: in 2-D, with
+//   cells of half the reach, the rest of its own row of five cells and the two rows of five above
+//   (CellList::forEachForwardRow<2>), about 22 candidates for 10 neighbours. A halo entry takes
+//   its pairs with fluid entries only.
+// * Pass 1 tests a block of `lanes` consecutive candidates at a time (one vector of doubles, GCC
+//   vector extensions) and appends the neighbours (inside the row, 0 < r_ij < support h_ij) to a
+//   per-thread list. Pass 2 evaluates the terms on that list, `lanes` neighbours at a time,
+//   padded with a far-away massless entry: i's rates add in registers (lane l into lane l, the
+//   lanes summed in a fixed order at the end), j's share goes straight to j's rate record. Pass
+//   2 has no branch: the approaching-pair test of eq. 10 is a select.
+// * Threads without atomics, and the same bits for any thread count: the sorted entries are cut
+//   into bands of two layers of cells (along the slowest axis). A pair's j lies in i's band or the
+//   next, so the even bands run at once, then the odd ones; within a band entries go in sorted
+//   order. Every rate is thus summed in an order fixed by the cell list alone.
 // * One square root and one division per pair: 1/r, 1/h_ij, 1/(r^2 + eta^2) and 1/(rho_i + rho_j)
 //   come from the reciprocal of their product (pairReciprocals).
 // * All arrays live in the workspace and only grow: no allocation per step.
@@ -94,21 +95,22 @@ inline double sum(Vd x) {  // the lanes, in a fixed order
 template <int D>
 struct ForceEvaluation<D>::Workspace {
   CellList<D> cells;
-  // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k (v, rho, p/rho^2, m in 3-D
-  // only).
+  // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k (v, rho, p/rho^2, m by
+  // field in 3-D only).
   std::array<std::vector<double>, D> x, v;
-  std::vector<double> h, rho, rhoInv, pOverRho2, m, mOverRho, mu;
+  std::vector<double> h, rho, pOverRho2, m;
+  std::vector<std::int64_t> receives;  // all ones for a fluid entry, zero for the halo
   // For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho, p/rho^2, m}
   // (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors and transposes
-  // them, instead of gathering each field.
-  std::vector<double> recordStore;
-  double* record = nullptr;    // recordStore's first 64-byte aligned element
-  std::vector<int> fluid;      // sorted positions of the fluid entries (those that receive rates)
-  struct alignas(64) Blocks {  // one thread's blocks (first entry, end of its row) and neighbours
-    std::vector<std::int64_t> first, end;
+  // them, instead of gathering each field. For every D, a 32-byte record {m/rho, mu, 1/rho, 0},
+  // and the rates' record (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by axis).
+  std::vector<double> recordStore, extraStore, rateStore;
+  double *record = nullptr, *extra = nullptr, *rate = nullptr;  // 64-byte aligned
+  struct alignas(64) Scratch {  // one thread's: a cell's forward rows, a particle's neighbours
+    std::vector<std::array<int, 2>> rows;
     std::vector<int> neighbours;
   };
-  std::vector<Blocks> blocks;
+  std::vector<Scratch> scratch;
 };
 
 namespace {
@@ -127,6 +129,13 @@ inline Reciprocals pairReciprocals(Vd a, Vd b, Vd c, Vd d) {
   return {abInv * b, abInv * a, cdInv * d, cdInv * c};
 }
 
+// Grows `store` to hold n doubles from a 64-byte boundary and returns that boundary.
+double* aligned(std::vector<double>& store, std::size_t n) {
+  store.resize(n + 8);
+  const auto address = reinterpret_cast<std::uintptr_t>(store.data());
+  return store.data() + (64 - address % 64) % 64 / sizeof(double);
+}
+
 template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool VariableH, int D>
 void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluation<D>::Workspace& w,
               Derivatives<D>& out) {
@@ -142,20 +151,20 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
   for (int a = 0; a < D; ++a) w.x[a].resize(nPadded);
-  w.h.resize(nPadded), w.mu.resize(nPadded), w.rhoInv.resize(nPadded), w.mOverRho.resize(nPadded);
+  w.h.resize(nPadded), w.receives.resize(nPadded);
   if constexpr (D > 2) {  // in 1-D and 2-D these fields are read from the records only
     for (int a = 0; a < D; ++a) w.v[a].resize(nPadded);
     w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
   }
-  constexpr int recordSize = 8;
-  if constexpr (D <= 2) {
-    w.recordStore.resize(recordSize * nPadded + 8);
-    const auto address = reinterpret_cast<std::uintptr_t>(w.recordStore.data());
-    w.record = w.recordStore.data() + (64 - address % 64) % 64 / sizeof(double);
-  }
+  constexpr int recordSize = 8, extraSize = 4, rateWidth = D <= 2 ? 4 : 8;
+  if constexpr (D <= 2) w.record = aligned(w.recordStore, recordSize * nPadded);
+  w.extra = aligned(w.extraStore, extraSize * nPadded);
+  w.rate = aligned(w.rateStore, rateWidth * nPadded);
   for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
     for (int a = 0; a < D; ++a) w.x[a][k] = 1e100;
-    w.h[k] = hMax, w.rhoInv[k] = 1.0, w.mu[k] = 0.0, w.mOverRho[k] = 0.0;
+    w.h[k] = hMax, w.receives[k] = 0;
+    double* e = w.extra + extraSize * k;
+    e[0] = e[1] = e[3] = 0.0, e[2] = 1.0;
     if constexpr (D <= 2) {
       double* r = w.record + recordSize * k;
       r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
@@ -165,13 +174,13 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
     }
   }
   const int nFluid = static_cast<int>(set.nFluid);
-  w.fluid.clear();
-  for (std::size_t k = 0; k < n; ++k)
-    if (order[k] < nFluid) w.fluid.push_back(static_cast<int>(k));
   out.resize(set.nFluid);
-  if (static_cast<int>(w.blocks.size()) < omp_get_max_threads())
-    w.blocks.resize(omp_get_max_threads());
-  const std::int64_t nWork = static_cast<std::int64_t>(w.fluid.size());
+  if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
+    w.scratch.resize(omp_get_max_threads());
+  // Bands of two layers of cells: a point's forward neighbours lie in its own band and the next,
+  // so the even bands can run at the same time, then the odd ones.
+  constexpr int reach = 2;
+  const int nBands = (w.cells.layers() + reach - 1) / reach;
 
 #pragma omp parallel
   {
@@ -183,7 +192,11 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
       for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a];
       const double rho = set.rho[s], rhoInv = 1.0 / rho, m = set.m[s], h = set.h[s];
       const double pr = set.p[s] * rhoInv * rhoInv;
-      w.h[k] = h, w.rhoInv[k] = rhoInv, w.mu[k] = set.mu[s], w.mOverRho[k] = m * rhoInv;
+      w.h[k] = h, w.receives[k] = s < nFluid ? -1 : 0;
+      double* e = w.extra + extraSize * k;
+      e[0] = m * rhoInv, e[1] = set.mu[s], e[2] = rhoInv, e[3] = 0.0;
+      double* rate = w.rate + rateWidth * k;
+      for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
       if constexpr (D <= 2) {
         double* r = w.record + recordSize * k;
         r[0] = set.x[s][0], r[1] = D > 1 ? set.x[s][D - 1] : 0.0;
@@ -198,123 +211,183 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
     const double* vs[3] = {};
     for (int a = 0; a < D; ++a) xs[a] = w.x[a].data(), vs[a] = w.v[a].data();
     const double *hs = w.h.data(), *rhos = w.rho.data(), *prs = w.pOverRho2.data(),
-                 *ms = w.m.data(), *mus = w.mu.data(), *mOverRhos = w.mOverRho.data();
+                 *ms = w.m.data();
+    const std::int64_t* receives = w.receives.data();
     constexpr double reachFactor2 = 0.25 * Kernel::support * Kernel::support;
     const Vi iota = {0, 1, 2, 3};
     static_assert(lanes == 4);
-    auto& blocks = w.blocks[omp_get_thread_num()];
-    std::int64_t blocksOf = -1;  // the cell whose blocks `blocks` holds
-    std::size_t nBlocks = 0;
+    auto& scratch = w.scratch[omp_get_thread_num()];
 
-#pragma omp for schedule(dynamic, 64)
-    for (std::int64_t f = 0; f < nWork; ++f) {
-      const int i = w.fluid[f];
-      if (const std::int64_t c = w.cells.sortedCell(i); c != blocksOf) {
-        nBlocks = 0;
-        w.cells.template forEachAdjacentRow<2>(c, [&](int b, int e) {
-          const std::size_t need = nBlocks + (e - b + lanes - 1) / lanes;
-          if (blocks.first.size() < need)
-            blocks.first.resize(2 * need), blocks.end.resize(2 * need);
-          if (blocks.neighbours.size() < lanes * (need + 1))
-            blocks.neighbours.resize(2 * lanes * (need + 1));
-          for (std::int64_t j0 = b; j0 < e; j0 += lanes)
-            blocks.first[nBlocks] = j0, blocks.end[nBlocks++] = e;
-        });
-        blocksOf = c;
-      }
-      Vd xi[3], vi[3];
-      double rhoi, pri;
-      for (int a = 0; a < 3; ++a) xi[a] = broadcast(a < D ? xs[a][i] : 0.0);
-      if constexpr (D <= 2) {
-        const double* r = w.record + recordSize * i;
-        vi[0] = broadcast(r[2]), vi[1] = broadcast(r[3]), vi[2] = Vd{};
-        rhoi = r[5], pri = r[6];
-      } else {
-        for (int a = 0; a < 3; ++a) vi[a] = broadcast(vs[a][i]);
-        rhoi = rhos[i], pri = prs[i];
-      }
-      const double hi = hs[i];
-      const double muRhoInvi = mus[i] * w.rhoInv[i], rhoInvi = w.rhoInv[i];
-      Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
+    // Each pair (i, j > i in sorted order, at least one of them fluid) once: i's rates add the
+    // pair's terms in registers, j's record gets the opposite share at once (eq. 11-13 are
+    // symmetric in i, j up to the masses and the sign of grad W).
+    auto band = [&](std::int64_t begin, std::int64_t end) {
+      std::int64_t rowsOf = -1;  // the cell whose forward rows `scratch.rows` holds
+      for (std::int64_t i = begin; i < end; ++i) {
+        const std::int64_t c = w.cells.sortedCell(static_cast<int>(i));
+        const int ownEnd = w.cells.template ownRowEnd<reach>(c);
+        if (c != rowsOf) {
+          scratch.rows.clear();
+          std::size_t candidates = ownEnd - w.cells.cellBegin(c);
+          w.cells.template forEachForwardRow<reach>(c, [&](int b, int e) {
+            scratch.rows.push_back({b, e}), candidates += e - b;
+          });
+          if (scratch.neighbours.size() < candidates + 2 * lanes)
+            scratch.neighbours.resize(2 * (candidates + 2 * lanes));
+          rowsOf = c;
+        }
 
-      // Pass 1: the neighbours (0 < r_ij < support h_ij) among the candidates, in sorted order.
-      int* nb = blocks.neighbours.data();
-      const std::int64_t *first = blocks.first.data(), *rowEnd = blocks.end.data();
-      int count = 0;
-      for (std::size_t b = 0; b < nBlocks; ++b) {
-        const std::int64_t j = first[b];
-        const Vd rx = xi[0] - load(xs[0] + j);
-        const Vd ry = D > 1 ? xi[1] - load(xs[1] + j) : Vd{};
-        const Vd rz = D > 2 ? xi[2] - load(xs[2] + j) : Vd{};
-        const Vd r2 = rx * rx + ry * ry + rz * rz;
-        const Vd hSum = hi + load(hs + j);  // 2 h_ij
-        // r2 > 0 drops the particle itself; a distinct particle at r = 0 adds nothing to any term.
-        const Vi in = (j + iota < rowEnd[b]) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum);
-        const unsigned bits = laneBits(in);  // append the lanes inside, in order
-        const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
-        __builtin_memcpy(nb + count, &packed, sizeof packed);
-        count += __builtin_popcount(bits);
-      }
-      // Pad the last vector with the far-away, massless entry n: it adds zero.
-      for (int l = 0; l < lanes; ++l) nb[count + l] = static_cast<int>(nSorted);
-
-      // Pass 2: the terms, one vector of neighbours at a time.
-      for (int k = 0; k < count; k += lanes) {
-        const int* jj = nb + k;
-        auto gather = [&](const double* p) { return Vd{p[jj[0]], p[jj[1]], p[jj[2]], p[jj[3]]}; };
-        Vd xj[3], vj[3], hj, rhoj, prj, mj;  // the four neighbours' fields
+        Vd xi[3], vi[3];
+        double rhoi, pri, mi;
+        for (int a = 0; a < 3; ++a) xi[a] = broadcast(a < D ? xs[a][i] : 0.0);
         if constexpr (D <= 2) {
-          const double* r[4] = {w.record + recordSize * jj[0], w.record + recordSize * jj[1],
-                                w.record + recordSize * jj[2], w.record + recordSize * jj[3]};
-          xj[0] = load(r[0]), xj[1] = load(r[1]), vj[0] = load(r[2]), vj[1] = load(r[3]);
-          transpose(xj[0], xj[1], vj[0], vj[1]);
-          hj = load(r[0] + 4), rhoj = load(r[1] + 4), prj = load(r[2] + 4), mj = load(r[3] + 4);
-          transpose(hj, rhoj, prj, mj);
-          xj[2] = vj[2] = Vd{};
+          const double* r = w.record + recordSize * i;
+          vi[0] = broadcast(r[2]), vi[1] = broadcast(r[3]), vi[2] = Vd{};
+          rhoi = r[5], pri = r[6], mi = r[7];
         } else {
-          for (int a = 0; a < 3; ++a) xj[a] = gather(xs[a]), vj[a] = gather(vs[a]);
-          hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
+          for (int a = 0; a < 3; ++a) vi[a] = broadcast(vs[a][i]);
+          rhoi = rhos[i], pri = prs[i], mi = ms[i];
         }
-        // r_ij, v_ij by component.
-        const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
-        const Vd ry = xi[1] - xj[1], vy = vi[1] - vj[1];
-        const Vd rz = xi[2] - xj[2], vz = vi[2] - vj[2];
-        const Vd r2 = rx * rx + ry * ry + rz * rz, vr = vx * rx + vy * ry + vz * rz;
-        const Vd hSum = hi + hj, hSum2 = hSum * hSum;  // 2 h_ij
-        // The padding lanes get a harmless r (and add zero: their masses are zero).
-        const Vd r2c = k + iota < count ? r2 : hSum2;
-        const Vd mOverRhoj = gather(mOverRhos);
-        const Vd r = sqrt(r2c);
-        // Anti-crossing eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h_ij^2 = hSum^2 / 4.
-        const Vd rEta2 = r2c + 0.0025 * hSum2;
-        const Vd one = broadcast(1.0);
-        const Vd rhoSum = ArtificialViscosity ? rhoi + rhoj : one;
-        const auto inv = pairReciprocals(hSum, rEta2, rhoSum, Kernel::usesInverseR ? r : one);
-        const Vd hInv = 2.0 * inv.a;                                 // 1 / h_ij
-        const Vd F = Kernel::template gradOverR<D>(r, inv.d, hInv);  // grad_i W_ij = F r_ij
-        const Vd vDotGradW = vr * F;
-        accRho += mj * vDotGradW;                                // eq. (11)
-        if constexpr (VariableH) accH += mOverRhoj * vDotGradW;  // eq. (13)
-        Vd pressureTerm = pri + prj;                             // eq. (12)
-        if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
-          const Vd muij = vr * inv.b;
-          const Vd pi = (0.5 * beta) * hSum2 * inv.c * muij * muij;
-          pressureTerm += vr < 0.0 ? pi : Vd{};
+        const double hi = hs[i];
+        const double* ei = w.extra + extraSize * i;
+        const double mOverRhoi = ei[0], mui = ei[1], rhoInvi = ei[2];
+        const Vi anyFluid = Vi{} + receives[i];
+        Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
+
+        // Pass 1: the forward neighbours (0 < r_ij < support h_ij, one of the two fluid), in
+        // sorted order: the own row first, then the shared rows.
+        int* nb = scratch.neighbours.data();
+        int count = 0;
+        auto test = [&](std::int64_t rowBegin, std::int64_t rowEnd) {
+          for (std::int64_t j = rowBegin; j < rowEnd; j += lanes) {
+            const Vd rx = xi[0] - load(xs[0] + j);
+            const Vd ry = D > 1 ? xi[1] - load(xs[1] + j) : Vd{};
+            const Vd rz = D > 2 ? xi[2] - load(xs[2] + j) : Vd{};
+            const Vd r2 = rx * rx + ry * ry + rz * rz;
+            const Vd hSum = hi + load(hs + j);  // 2 h_ij
+            Vi fluidJ;
+            __builtin_memcpy(&fluidJ, receives + j, sizeof fluidJ);
+            // r2 > 0: a distinct particle at r = 0 adds nothing to any term.
+            const Vi in = (j + iota < rowEnd) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum) &
+                          (anyFluid | fluidJ);
+            const unsigned bits = laneBits(in);  // append the lanes inside, in order
+            const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
+            __builtin_memcpy(nb + count, &packed, sizeof packed);
+            count += __builtin_popcount(bits);
+          }
+        };
+        test(i + 1, ownEnd);
+        for (const auto& [b, e] : scratch.rows) test(b, e);
+        // Pad the last vector with the far-away, massless entry n: it adds zero to i.
+        const Vi32 padding = Vi32{} + static_cast<int>(nSorted);
+        __builtin_memcpy(nb + count, &padding, sizeof padding);
+
+        // Pass 2: the terms, one vector of neighbours at a time.
+        for (int k = 0; k < count; k += lanes) {
+          const int* jj = nb + k;
+          auto gather = [&](const double* p) { return Vd{p[jj[0]], p[jj[1]], p[jj[2]], p[jj[3]]}; };
+          Vd xj[3], vj[3], hj, rhoj, prj, mj;  // the four neighbours' fields
+          if constexpr (D <= 2) {
+            const double* r[4] = {w.record + recordSize * jj[0], w.record + recordSize * jj[1],
+                                  w.record + recordSize * jj[2], w.record + recordSize * jj[3]};
+            xj[0] = load(r[0]), xj[1] = load(r[1]), vj[0] = load(r[2]), vj[1] = load(r[3]);
+            transpose(xj[0], xj[1], vj[0], vj[1]);
+            hj = load(r[0] + 4), rhoj = load(r[1] + 4), prj = load(r[2] + 4), mj = load(r[3] + 4);
+            transpose(hj, rhoj, prj, mj);
+            xj[2] = vj[2] = Vd{};
+          } else {
+            for (int a = 0; a < 3; ++a) xj[a] = gather(xs[a]), vj[a] = gather(vs[a]);
+            hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
+          }
+          Vd mOverRhoj = load(w.extra + extraSize * jj[0]), muj = load(w.extra + extraSize * jj[1]),
+             rhoInvj = load(w.extra + extraSize * jj[2]),
+             unused = load(w.extra + extraSize * jj[3]);
+          transpose(mOverRhoj, muj, rhoInvj, unused);
+          // r_ij, v_ij by component.
+          const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
+          const Vd ry = xi[1] - xj[1], vy = vi[1] - vj[1];
+          const Vd rz = xi[2] - xj[2], vz = vi[2] - vj[2];
+          const Vd r2 = rx * rx + ry * ry + rz * rz, vr = vx * rx + vy * ry + vz * rz;
+          const Vd hSum = hi + hj, hSum2 = hSum * hSum;  // 2 h_ij
+          // The padding lanes get a harmless r (and add zero to i: their masses are zero).
+          const Vd r2c = k + iota < count ? r2 : hSum2;
+          const Vd r = sqrt(r2c);
+          // Anti-crossing eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h_ij^2 = hSum^2 / 4.
+          const Vd rEta2 = r2c + 0.0025 * hSum2;
+          const Vd one = broadcast(1.0);
+          const Vd rhoSum = ArtificialViscosity ? rhoi + rhoj : one;
+          const auto inv = pairReciprocals(hSum, rEta2, rhoSum, Kernel::usesInverseR ? r : one);
+          const Vd hInv = 2.0 * inv.a;                                 // 1 / h_ij
+          const Vd F = Kernel::template gradOverR<D>(r, inv.d, hInv);  // grad_i W_ij = F r_ij
+          const Vd vDotGradW = vr * F;          // v_ij . grad_i W_ij = v_ji . grad_j W_ji
+          Vd pressureTerm = pri + prj;          // eq. (12)
+          if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
+            const Vd muij = vr * inv.b;
+            const Vd pi = (0.5 * beta) * hSum2 * inv.c * muij * muij;
+            pressureTerm += vr < 0.0 ? pi : Vd{};
+          }
+          const Vd G = pressureTerm * F;  // dv_i/dt gets -m_j G r_ij, dv_j/dt gets +m_i G r_ij
+          // eq. (9): m_j (mu_i + mu_j)/(rho_i rho_j) (r_ij . grad W)/(r_ij^2 + eta^2) v_ij, with
+          // r_ij . grad W = F r^2; i's share has m_j/rho_j and 1/rho_i, j's m_i/rho_i and 1/rho_j.
+          Vd Mi{}, Mj{};
+          if constexpr (MorrisViscosity) {
+            const Vd X = (mui + muj) * (F * r2c) * inv.b;
+            Mi = mOverRhoj * rhoInvi * X, Mj = mOverRhoi * rhoInvj * X;
+          }
+          accRho += mj * vDotGradW;                                // eq. (11)
+          if constexpr (VariableH) accH += mOverRhoj * vDotGradW;  // eq. (13)
+          const Vd cr = -mj * G;
+          accX += cr * rx + Mi * vx;
+          if constexpr (D > 1) accY += cr * ry + Mi * vy;
+          if constexpr (D > 2) accZ += cr * rz + Mi * vz;
+          // j's share, lane by lane into its record (live lanes only: the padding's is dropped).
+          Vd jRho = mi * vDotGradW, jH = VariableH ? mOverRhoi * vDotGradW : Vd{};
+          const Vd crj = mi * G;
+          Vd jX = crj * rx - Mj * vx, jY = D > 1 ? crj * ry - Mj * vy : Vd{};
+          const int live = std::min(lanes, count - k);
+          if constexpr (D <= 2) {
+            transpose(jRho, jH, jX, jY);  // now one record {rho, h, x, y} per lane
+            const Vd lane[4] = {jRho, jH, jX, jY};
+            for (int l = 0; l < live; ++l) {
+              double* rate = w.rate + rateWidth * jj[l];
+              const Vd updated = load(rate) + lane[l];
+              __builtin_memcpy(rate, &updated, sizeof updated);
+            }
+          } else {
+            const Vd jZ = crj * rz - Mj * vz;
+            for (int l = 0; l < live; ++l) {
+              double* rate = w.rate + rateWidth * jj[l];
+              rate[0] += jRho[l], rate[1] += jH[l], rate[2] += jX[l], rate[3] += jY[l];
+              rate[4] += jZ[l];
+            }
+          }
         }
-        const Vd cr = -mj * pressureTerm * F;  // coefficient of r_ij
-        Vd cv{};                               // coefficient of v_ij
-        if constexpr (MorrisViscosity)  // eq. (9); (mu_i + mu_j)/(rho_i rho_j), r_ij.grad W = F r^2
-          cv = mOverRhoj * (muRhoInvi + gather(mus) * rhoInvi) * (F * r2c) * inv.b;
-        accX += cr * rx + cv * vx;
-        if constexpr (D > 1) accY += cr * ry + cv * vy;
-        if constexpr (D > 2) accZ += cr * rz + cv * vz;
+        double* rate = w.rate + rateWidth * i;
+        if constexpr (D <= 2) {  // the lanes summed in a fixed order, four fields at once
+          transpose(accRho, accH, accX, accY);
+          const Vd updated = load(rate) + (((accRho + accH) + accX) + accY);
+          __builtin_memcpy(rate, &updated, sizeof updated);
+        } else {
+          rate[0] += sum(accRho), rate[1] += sum(accH), rate[2] += sum(accX);
+          rate[3] += sum(accY), rate[4] += sum(accZ);
+        }
       }
-      const int dst = order[i];
-      out.drhodt[dst] = sum(accRho);
-      out.dvdt[dst][0] = sum(accX);
-      if constexpr (D > 1) out.dvdt[dst][1] = sum(accY);
-      if constexpr (D > 2) out.dvdt[dst][2] = sum(accZ);
-      out.dhdt[dst] = VariableH ? hi / D * sum(accH) : 0.0;
+    };
+    // Even bands, then (after the barrier) odd ones: no two bands at work at once share a record.
+    for (int parity = 0; parity < 2; ++parity) {
+#pragma omp for schedule(dynamic, 1)
+      for (int b = parity; b < nBands; b += 2)
+        band(w.cells.layerBegin(reach * b), w.cells.layerBegin(reach * (b + 1)));
+    }
+
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < nSorted; ++k) {
+      const int dst = order[k];
+      if (dst >= nFluid) continue;
+      const double* rate = w.rate + rateWidth * k;
+      out.drhodt[dst] = rate[0];
+      out.dhdt[dst] = VariableH ? hs[k] / D * rate[1] : 0.0;
+      for (int a = 0; a < D; ++a) out.dvdt[dst][a] = rate[2 + a];
     }
   }
 }

@@ -163,6 +163,9 @@ void allCombinations(unsigned seed) {
   }
 }
 
+TEST(ForceEvaluation, MatchesReferenceLoop1D) {
+  allCombinations<1>(10);
+}
 TEST(ForceEvaluation, MatchesReferenceLoop2D) {
   allCombinations<2>(11);
 }
@@ -170,8 +173,9 @@ TEST(ForceEvaluation, MatchesReferenceLoop3D) {
   allCombinations<3>(12);
 }
 
-// The pair loop is in parallel over cells, each particle summing its own neighbours in a fixed
-// order (ForceEvaluation.hpp), so the thread count must not change a single bit.
+// The pair loop visits each pair once, in bands of cell layers that run in a fixed order of two
+// phases (ForceEvaluation.cpp), so every rate is summed in an order that the cell list alone
+// fixes: the thread count must not change a single bit. 300 particles make 6 bands here.
 TEST(ForceEvaluation, ThreadCountDoesNotChangeBits) {
   const auto set = randomSet<2>(13);
   const sph::TermSwitches all{true, true, true};

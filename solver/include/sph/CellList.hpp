@@ -164,12 +164,50 @@ class CellList {
     }
   }
 
+  // The forward half of forEachAdjacentRow<Reach>, for a loop that visits each pair once: the
+  // rows whose offset along the slowest axis that is not zero is positive (in 2-D the Reach rows
+  // above; in 3-D also the rows beside in the layers above). With the points of the own row that
+  // come after a point (up to ownRowEnd), they hold every neighbour that follows it in the sorted
+  // order and none that precedes it. The rows come in a fixed order.
+  template <int Reach = 1, class F>
+  void forEachForwardRow(std::int64_t c, F&& f) const {
+    if constexpr (D > 1) {
+      forEachAdjacentRow<Reach>(c, f, [](const auto& off) {
+        for (int a = D - 1; a >= 1; --a)
+          if (off[a] != 0) return off[a] > 0;
+        return false;
+      });
+    }
+  }
+  // The end of the sorted range of the cells ix .. ix+Reach of the own row of cell c.
+  template <int Reach = 1>
+  int ownRowEnd(std::int64_t c) const {
+    const int ix = static_cast<int>(c % dims_[0]);
+    return start_[c + std::min(Reach, dims_[0] - 1 - ix) + 1];
+  }
+
+  // Layers: the cells with one index along the slowest axis (D-1), each a contiguous range of the
+  // sorted order. layerBegin(layers()) is the end of the last.
+  int layers() const {
+    return dims_[D - 1];
+  }
+  int layerBegin(int layer) const {
+    std::int64_t perLayer = 1;
+    for (int a = 0; a + 1 < D; ++a) perLayer *= dims_[a];
+    return start_[std::min(layer, dims_[D - 1]) * perLayer];
+  }
+
   // Calls f(begin, end) for each of the (2 Reach + 1)^(D-1) rows of cells around cell `c`: the
   // sorted range of the cells ix-Reach .. ix+Reach (clipped to the grid) at each offset -Reach ..
   // Reach of the other axes. The ranges come in a fixed order; for Reach = 1 they together hold
   // the same points as forEachAdjacentRange's.
   template <int Reach = 1, class F>
   void forEachAdjacentRow(std::int64_t c, F&& f) const {
+    forEachAdjacentRow<Reach>(c, f, [](const auto&) { return true; });
+  }
+  // The same for the rows whose offsets (axes 1 .. D-1) `keep(off)` accepts.
+  template <int Reach, class F, class Keep>
+  void forEachAdjacentRow(std::int64_t c, F&& f, Keep&& keep) const {
     const int ix = static_cast<int>(c % dims_[0]);
     const std::int64_t rowStart = c - ix;  // cell (0, iy, iz)
     const int first = std::max(-Reach, -ix), last = std::min(Reach, dims_[0] - 1 - ix);
@@ -190,7 +228,7 @@ class CellList {
           shift += off[a] * stride;
           stride *= dims_[a];
         }
-        if (inside) {
+        if (inside && keep(off)) {
           const std::int64_t row = rowStart + shift;
           const int b = start_[row + ix + first], e = start_[row + ix + last + 1];
           if (b != e) f(b, e);

@@ -32,15 +32,16 @@ class ForceEvaluation {
   ForceEvaluation(KernelKind kernel, TermSwitches terms, double beta);
 
   // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt.
-  // Body forces are not included. Each particle sums its own neighbours in a fixed order, so
-  // the result does not depend on the number of threads.
+  // Body forces are not included. Each pair is evaluated once and every sum runs in an order
+  // that the cell list fixes, so the result does not depend on the number of threads.
   void operator()(const InteractionSet<D>& set, Derivatives<D>& out);
 
   // Names of the terms the chosen loop evaluates, for the run file.
   std::vector<std::string> termNames() const;
   KernelKind kernel() const { return kernel_; }
 
-  struct Workspace;  // cell list and cell-sorted copies, kept between calls (no allocation per step)
+  struct Workspace;  // cell list and cell-sorted copies, kept between calls (no allocation per
+                     // step)
 
  private:
   using Loop = void (*)(const InteractionSet<D>&, double beta, Workspace&, Derivatives<D>&);
