@@ -50,6 +50,13 @@ inline Vd load(const double* p) {  // lanes consecutive doubles, unaligned
   __builtin_memcpy(&v, p, sizeof v);
   return v;
 }
+inline Vd load2(const double* a, const double* b) {  // {a[0], a[1], b[0], b[1]}
+#if defined(__AVX__)
+  return reinterpret_cast<Vd>(_mm256_loadu2_m128d(b, a));
+#else
+  return Vd{a[0], a[1], b[0], b[1]};
+#endif
+}
 inline Vd broadcast(double x) {
   return Vd{} + x;
 }
@@ -102,7 +109,7 @@ struct ForceEvaluation<D>::Workspace {
   std::vector<std::int64_t> receives;  // all ones for a fluid entry, zero for the halo
   // For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho, p/rho^2, m}
   // (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors and transposes
-  // them, instead of gathering each field. For every D, a 32-byte record {m/rho, mu, 1/rho, 0},
+  // them, instead of gathering each field. For every D, a 16-byte record {mu, 1/rho},
   // and the rates' record (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by axis).
   std::vector<double> recordStore, extraStore, rateStore;
   double *record = nullptr, *extra = nullptr, *rate = nullptr;  // 64-byte aligned
@@ -156,7 +163,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
     for (int a = 0; a < D; ++a) w.v[a].resize(nPadded);
     w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
   }
-  constexpr int recordSize = 8, extraSize = 4, rateWidth = D <= 2 ? 4 : 8;
+  constexpr int recordSize = 8, extraSize = 2, rateWidth = D <= 2 ? 4 : 8;
   if constexpr (D <= 2) w.record = aligned(w.recordStore, recordSize * nPadded);
   w.extra = aligned(w.extraStore, extraSize * nPadded);
   w.rate = aligned(w.rateStore, rateWidth * nPadded);
@@ -164,7 +171,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
     for (int a = 0; a < D; ++a) w.x[a][k] = 1e100;
     w.h[k] = hMax, w.receives[k] = 0;
     double* e = w.extra + extraSize * k;
-    e[0] = e[1] = e[3] = 0.0, e[2] = 1.0;
+    e[0] = 0.0, e[1] = 1.0;
     if constexpr (D <= 2) {
       double* r = w.record + recordSize * k;
       r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
@@ -194,7 +201,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
       const double pr = set.p[s] * rhoInv * rhoInv;
       w.h[k] = h, w.receives[k] = s < nFluid ? -1 : 0;
       double* e = w.extra + extraSize * k;
-      e[0] = m * rhoInv, e[1] = set.mu[s], e[2] = rhoInv, e[3] = 0.0;
+      e[0] = set.mu[s], e[1] = rhoInv;
       double* rate = w.rate + rateWidth * k;
       for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
       if constexpr (D <= 2) {
@@ -250,7 +257,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
         }
         const double hi = hs[i];
         const double* ei = w.extra + extraSize * i;
-        const double mOverRhoi = ei[0], mui = ei[1], rhoInvi = ei[2];
+        const double mui = ei[0], rhoInvi = ei[1], mOverRhoi = mi * rhoInvi;
         const Vi anyFluid = Vi{} + receives[i];
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
 
@@ -299,10 +306,10 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
             for (int a = 0; a < 3; ++a) xj[a] = gather(xs[a]), vj[a] = gather(vs[a]);
             hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
           }
-          Vd mOverRhoj = load(w.extra + extraSize * jj[0]), muj = load(w.extra + extraSize * jj[1]),
-             rhoInvj = load(w.extra + extraSize * jj[2]),
-             unused = load(w.extra + extraSize * jj[3]);
-          transpose(mOverRhoj, muj, rhoInvj, unused);
+          const Vd t0 = load2(w.extra + extraSize * jj[0], w.extra + extraSize * jj[2]),
+                   t1 = load2(w.extra + extraSize * jj[1], w.extra + extraSize * jj[3]);
+          const Vd muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6),
+                   rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7), mOverRhoj = mj * rhoInvj;
           // r_ij, v_ij by component.
           const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
           const Vd ry = xi[1] - xj[1], vy = vi[1] - vj[1];
