@@ -289,9 +289,11 @@ int main(int argc, char** argv) {
   }
   for (auto& [t, xy] : sc) scaling.series.push_back({std::to_string(t) + " thread(s)", xy});
   for (auto& [t, xy] : ff) flopFraction.series.push_back({std::to_string(t) + " thread(s)", xy});
-  flopFraction.source = "flops per pair counted from the source (perf/Workload.hpp: " +
-                        std::to_string(sph::perf::PairFlops::of(all)) +
-                        " for all terms); peak from a 12-chain FMA kernel on the same machine";
+  flopFraction.source =
+      "flops counted from the source (perf/Workload.hpp: each pair once, " +
+      std::to_string(sph::perf::PairFlops::sum(all).shared) + " shared + 2 x " +
+      std::to_string(sph::perf::PairFlops::sum(all).sided) +
+      " for its two particles, all terms); peak from a 12-chain FMA kernel on the same machine";
   scaling.write(std::filesystem::path(outDir) / "perf_force_scaling.json");
   flopFraction.write(std::filesystem::path(outDir) / "perf_flop_fraction.json");
 
@@ -315,7 +317,7 @@ int main(int argc, char** argv) {
       const double s = timePerCall([&] { force(b.set, b.out); });
       std::string label;
       for (const auto& name : force.termNames()) label += (label.empty() ? "" : "+") + name;
-      std::printf("%5d %-70s %12.1f %8d %10.2f\n", t, label.c_str(), 1e9 * s / nf,
+      std::printf("%5d %-70s %12.1f %8.1f %10.2f\n", t, label.c_str(), 1e9 * s / nf,
                   sph::perf::PairFlops::of(sw), pairs * sph::perf::PairFlops::of(sw) / s / 1e9);
       x.push_back(t), y.push_back(1e9 * s / nf);
       terms.source += (t ? "; " : "") + std::to_string(t) + ": " + label;
