@@ -75,6 +75,66 @@ TEST(Neighbours, CellListMatchesBruteForce3D) {
   cellListAgainstBruteForce<3>(4, true);
 }
 
+// The pair-once loop's half shell (ForceEvaluation.cpp): with cells of half the reach, the rest of
+// a point's own row of five cells (up to ownRowEnd<2>) and its forward rows (forEachForwardRow<2>)
+// must hold every neighbour that follows it in the sorted order, so that each pair is found exactly
+// once; and the later point of a pair must lie in the same band of two layers or the next (the
+// loop's even and odd bands run at once on that promise).
+template <int D>
+void forwardRowsAgainstBruteForce(unsigned seed, bool clustered) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = 600;
+  std::vector<sph::Vec<D>> x(n);
+  std::vector<double> h(n);
+  const double h0 = D == 1 ? 0.01 : D == 2 ? 0.03 : 0.08;  // about 10-20 neighbours each
+  for (int i = 0; i < n; ++i) {
+    for (int a = 0; a < D; ++a) x[i][a] = u(rng);
+    h[i] = h0 * (0.5 + u(rng));
+  }
+  if (clustered)
+    for (int i = 0; i < 3; ++i) x[i] *= 1e4;
+  const double hMax = *std::max_element(h.begin(), h.end());
+  sph::CellList<D> cells;
+  cells.build(x, hMax);  // half the reach 2 h_max
+  const auto& order = cells.order();
+  std::vector<int> layerStart;
+  for (int l = 0; l <= cells.layers(); ++l) layerStart.push_back(cells.layerBegin(l));
+  auto band = [&](int k) {
+    const auto it = std::upper_bound(layerStart.begin(), layerStart.end(), k);
+    return static_cast<int>(it - layerStart.begin() - 1) / 2;
+  };
+  std::multiset<Pair> found;
+  for (int k = 0; k < n; ++k) {
+    const std::int64_t c = cells.sortedCell(k);
+    auto sweep = [&](int begin, int end) {
+      for (int l = begin; l < end; ++l) {
+        const int i = order[k], j = order[l];
+        if (!within<D>(x[i], x[j], h[i], h[j])) continue;
+        found.insert({std::min(i, j), std::max(i, j)});
+        const int step = band(l) - band(k);
+        EXPECT_TRUE(step == 0 || step == 1) << "pair in bands " << band(k) << " and " << band(l);
+      }
+    };
+    sweep(k + 1, cells.template ownRowEnd<2>(c));
+    cells.template forEachForwardRow<2>(c, sweep);
+  }
+  std::multiset<Pair> expected;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (within<D>(x[i], x[j], h[i], h[j])) expected.insert({i, j});
+  ASSERT_GT(expected.size(), static_cast<std::size_t>(2 * n)) << "too few pairs to test anything";
+  EXPECT_EQ(found, expected);  // every pair once
+}
+
+TEST(Neighbours, ForwardRowsHoldEachPairOnce) {
+  for (bool clustered : {false, true}) {
+    forwardRowsAgainstBruteForce<1>(5, clustered);
+    forwardRowsAgainstBruteForce<2>(6, clustered);
+    forwardRowsAgainstBruteForce<3>(7, clustered);
+  }
+}
+
 // Periodic on every axis: the interaction set's fluid entries and their images, searched by
 // brute force, must give every pair whose minimum-image distance is below 2 h_ij exactly once
 // (as (i, source of j)) and no other pair.
