@@ -27,22 +27,34 @@ bool within(const sph::Vec<D>& a, const sph::Vec<D>& b, double hi, double hj) {
   return (a - b).squaredNorm() < reach * reach;
 }
 
+// 600 points in the unit box with h varying by a factor 3 (h0/2 .. 3 h0/2); `clustered` sends a
+// few of them far away, which forces the cell list onto coarser cells (its O(N) guard).
+template <int D>
+struct RandomPoints {
+  static constexpr int n = 600;
+  std::vector<sph::Vec<D>> x = std::vector<sph::Vec<D>>(n);
+  std::vector<double> h = std::vector<double>(n);
+  double hMax = 0.0;
+  RandomPoints(unsigned seed, double h0, bool clustered) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < n; ++i) {
+      for (int a = 0; a < D; ++a) x[i][a] = u(rng);
+      h[i] = h0 * (0.5 + u(rng));
+    }
+    if (clustered)
+      for (int i = 0; i < 3; ++i) x[i] *= 1e4;
+    hMax = *std::max_element(h.begin(), h.end());
+  }
+};
+
 template <int D>
 void cellListAgainstBruteForce(unsigned seed, bool clustered) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const int n = 600;
-  std::vector<sph::Vec<D>> x(n);
-  std::vector<double> h(n);
-  const double h0 = D == 2 ? 0.03 : 0.08;  // about 20 (2-D) and 10 (3-D) neighbours each
-  for (int i = 0; i < n; ++i) {
-    for (int a = 0; a < D; ++a) x[i][a] = u(rng);
-    h[i] = h0 * (0.5 + u(rng));  // h varies by a factor 3 across particles
-  }
-  // A few far-away points force the list onto coarser cells (its O(N) guard).
-  if (clustered)
-    for (int i = 0; i < 3; ++i) x[i] *= 1e4;
-  const double hMax = *std::max_element(h.begin(), h.end());
+  // About 20 (2-D) and 10 (3-D) neighbours each.
+  const RandomPoints<D> p(seed, D == 2 ? 0.03 : 0.08, clustered);
+  const int n = p.n;
+  const auto &x = p.x, &h = p.h;
+  const double hMax = p.hMax;
   sph::CellList<D> cells;
   cells.build(x, 2.0 * hMax);
   const auto& order = cells.order();
@@ -82,19 +94,11 @@ TEST(Neighbours, CellListMatchesBruteForce3D) {
 // loop's even and odd bands run at once on that promise).
 template <int D>
 void forwardRowsAgainstBruteForce(unsigned seed, bool clustered) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const int n = 600;
-  std::vector<sph::Vec<D>> x(n);
-  std::vector<double> h(n);
-  const double h0 = D == 1 ? 0.01 : D == 2 ? 0.03 : 0.08;  // about 10-20 neighbours each
-  for (int i = 0; i < n; ++i) {
-    for (int a = 0; a < D; ++a) x[i][a] = u(rng);
-    h[i] = h0 * (0.5 + u(rng));
-  }
-  if (clustered)
-    for (int i = 0; i < 3; ++i) x[i] *= 1e4;
-  const double hMax = *std::max_element(h.begin(), h.end());
+  // About 10-20 neighbours each.
+  const RandomPoints<D> p(seed, D == 1 ? 0.01 : D == 2 ? 0.03 : 0.08, clustered);
+  const int n = p.n;
+  const auto &x = p.x, &h = p.h;
+  const double hMax = p.hMax;
   sph::CellList<D> cells;
   cells.build(x, hMax);  // half the reach 2 h_max
   const auto& order = cells.order();
