@@ -3,10 +3,13 @@
 // their bounding box and counting-sorted by cell, so that all neighbours of a point within
 // cellSize lie in the 3^D cells around it. O(N) to build and to query.
 //
-// Cells are numbered with axis 0 fastest, so the three cells ix-1, ix, ix+1 of one row along axis 0
-// are consecutive and their points form one contiguous range of the sorted order: a point's
-// neighbours lie in 3^(D-1) such ranges (forEachAdjacentRow), which a pair loop can sweep without
-// per-cell bookkeeping. With cells of half the reach, the neighbours lie within two cells
+// Cells are numbered along the points' axes in order, fastest first, except that the axis of the
+// longest extent comes last (slowest): the layers along it, which a parallel pair loop hands out
+// in bands, are then as many as the box allows (a dam break's flow is several times wider than
+// deep). Below, axis 0 is the fastest numbering axis. The three cells ix-1, ix, ix+1 of one row
+// along it are consecutive and their points form one contiguous range of the sorted order: a
+// point's neighbours lie in 3^(D-1) such ranges (forEachAdjacentRow), which a pair loop can sweep
+// without per-cell bookkeeping. With cells of half the reach, the neighbours lie within two cells
 // (forEachAdjacentRow<2>: 5^(D-1) rows of 5 cells), a tighter box around the reach's sphere:
 // in 2-D 25/4 against 9 times the squared reach, so fewer candidates to test.
 #include <omp.h>
@@ -43,13 +46,21 @@ class CellList {
     for (std::int64_t i = 1; i < count; ++i)
       for (int a = 0; a < D; ++a)
         lo[a] = std::min(lo[a], pos(i, a)), hi[a] = std::max(hi[a], pos(i, a));
-    for (int a = 0; a < D; ++a) lo_[a] = lo[a];
+    // The axis of the longest extent is numbered slowest (ties: the higher axis), the others keep
+    // their order.
+    int longest = D - 1;
+    for (int a = D - 2; a >= 0; --a)
+      if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
+    for (int a = 0, k = 0; a < D; ++a)
+      if (a != longest) axis_[k++] = a;
+    axis_[D - 1] = longest;
+    for (int a = 0; a < D; ++a) lo_[a] = lo[axis_[a]];
     // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct.
     size_ = cellSize;
     for (;;) {
       std::int64_t total = 1;
       for (int a = 0; a < D; ++a) {
-        dims_[a] = static_cast<int>(std::floor((hi[a] - lo[a]) / size_)) + 1;
+        dims_[a] = static_cast<int>(std::floor((hi[axis_[a]] - lo_[a]) / size_)) + 1;
         total *= dims_[a];
       }
       if (total <= static_cast<std::int64_t>(cellsPerPoint * n + 64)) break;
@@ -74,7 +85,7 @@ class CellList {
       for (std::int64_t i = begin; i < end; ++i) {
         std::int64_t idx = 0, stride = 1;
         for (int a = 0; a < D; ++a) {
-          int k = static_cast<int>((pos(i, a) - lo_[a]) / size_);
+          int k = static_cast<int>((pos(i, axis_[a]) - lo_[a]) / size_);
           k = std::clamp(k, 0, dims_[a] - 1);
           idx += k * stride;
           stride *= dims_[a];
@@ -132,7 +143,7 @@ class CellList {
   std::int64_t cellOf(const Vec<D>& x) const {
     std::int64_t idx = 0, stride = 1;
     for (int a = 0; a < D; ++a) {
-      const double k = std::floor((x[a] - lo_[a]) / size_);
+      const double k = std::floor((x[axis_[a]] - lo_[a]) / size_);
       if (k < -1.0 || k > dims_[a]) return -1;
       idx += std::clamp(static_cast<int>(k), 0, dims_[a] - 1) * stride;
       stride *= dims_[a];
@@ -186,8 +197,8 @@ class CellList {
     return start_[c + std::min(Reach, dims_[0] - 1 - ix) + 1];
   }
 
-  // Layers: the cells with one index along the slowest axis (D-1), each a contiguous range of the
-  // sorted order. layerBegin(layers()) is the end of the last.
+  // Layers: the cells with one index along the slowest numbering axis (the longest), each a
+  // contiguous range of the sorted order. layerBegin(layers()) is the end of the last.
   int layers() const {
     return dims_[D - 1];
   }
@@ -241,7 +252,8 @@ class CellList {
   }
 
  private:
-  Vec<D> lo_ = Vec<D>::Zero();
+  std::array<int, D> axis_{};   // numbering axis a (0 fastest) is the points' axis axis_[a]
+  Vec<D> lo_ = Vec<D>::Zero();  // lo_, dims_: by numbering axis
   double size_ = 1.0;
   std::array<int, D> dims_{};
   std::vector<int> start_, order_, counts_;
