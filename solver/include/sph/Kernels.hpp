@@ -28,7 +28,6 @@ std::string_view name(KernelKind);
 struct QuadraticKernel {
   static constexpr double support = 2.0;
   static constexpr KernelKind kind = KernelKind::quadratic;
-  static constexpr bool usesInverseR = true;  // gradOverR reads 1/r
   template <int D>
   static constexpr double norm() {
     if constexpr (D == 1) return 1.0;
@@ -48,7 +47,7 @@ struct QuadraticKernel {
     return norm<D>() / ipow<D + 1>(h) * (0.375 * q - 0.75);
   }
   // (1/r) dW/dr for the pair loop, from r, 1/r and 1/h, which the loop computes once per pair
-  // with one square root and one division for all its terms. Valid for 0 < r < 2h only (the
+  // for all its terms. Valid for 0 < r < 2h only (the
   // loop masks the other pairs out) and branch-free so that the loop vectorises.
   // (0.375 q - 0.75) / r = 0.375 / h - 0.75 / r.
   template <int D, class T>
@@ -61,7 +60,6 @@ struct QuadraticKernel {
 struct CubicSplineKernel {
   static constexpr double support = 2.0;
   static constexpr KernelKind kind = KernelKind::cubic_spline;
-  static constexpr bool usesInverseR = true;
   template <int D>
   static constexpr double norm() {
     if constexpr (D == 1) return 2.0 / 3.0;
@@ -100,7 +98,6 @@ struct CubicSplineKernel {
 struct WendlandC2Kernel {
   static constexpr double support = 2.0;
   static constexpr KernelKind kind = KernelKind::wendland_c2;
-  static constexpr bool usesInverseR = false;
   template <int D>
   static constexpr double norm() {
     if constexpr (D == 1) return 5.0 / 8.0;
