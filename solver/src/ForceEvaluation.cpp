@@ -496,6 +496,13 @@ void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>
 }
 
 template <int D>
+void ForceEvaluation<D>::cellOrder(std::size_t count, std::vector<int>& out) const {
+  out.clear();
+  for (const int s : work_->cells.order())
+    if (static_cast<std::size_t>(s) < count) out.push_back(s);
+}
+
+template <int D>
 std::vector<std::string> ForceEvaluation<D>::termNames() const {
   std::vector<std::string> names{"continuity", "pressure_gradient"};
   if (terms_.artificialViscosity) names.push_back("artificial_viscosity");

@@ -50,6 +50,8 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
       bounds_(boundariesOf<D>(scene)),
       forces_(scene.kernel, scene.terms, scene.beta),
       y_(std::move(initial)) {
+  id_.resize(y_.size());
+  for (std::size_t i = 0; i < y_.size(); ++i) id_[i] = static_cast<int>(i);
   for (std::size_t i = 0; i < y_.size(); ++i)
     y_.p[i] = TaitEquationOfState::pressure(y_.rho[i], scene_.phases[y_.phase[i]]);
 }
@@ -172,8 +174,8 @@ std::optional<Failure> Simulation<D>::checkParticle(const Particles<D>& s, std::
                                                     long step) const {
   auto fail = [&](FailureCause cause, const std::string& what) {
     std::ostringstream m;
-    m << "step " << step << ", t = " << t << " s, particle " << i << ": " << what;
-    return Failure{cause, step, t, static_cast<int>(i), m.str()};
+    m << "step " << step << ", t = " << t << " s, particle " << id_[i] << ": " << what;
+    return Failure{cause, step, t, id_[i], m.str()};
   };
   if (!s.r[i].allFinite()) return fail(FailureCause::nan, "position is not finite");
   if (!s.v[i].allFinite()) return fail(FailureCause::nan, "velocity is not finite");
@@ -237,6 +239,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   TimeStepLimit limit;
   int limiting = -1;
   const double dtStable = timeStep(limit, limiting);
+  if (limiting >= 0) limiting = id_[limiting];
   if (!(dtStable >= dtFloor_)) {
     std::ostringstream m;
     m << "step " << step_ + 1 << ", t = " << t_ << " s, particle " << limiting << ": time step "
@@ -280,10 +283,31 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   std::swap(y_, yStar_);
   t_ += dt, dt_ = dt, limit_ = limit;
   ++step_;
+  if (cellOrderEvery_ > 0 && step_ % cellOrderEvery_ == 0) storeInCellOrder();
   rates(y_, t_, f_);
 #pragma omp parallel for if (parallel)
   for (std::int64_t i = 0; i < count; ++i) y_.p[i] = set_.p[i];
   return std::nullopt;
+}
+
+template <int D>
+void Simulation<D>::storeInCellOrder() {
+  // The last evaluation was of the corrector's y*, whose particles have y's indices.
+  forces_.cellOrder(y_.size(), order_);
+  const std::int64_t n = static_cast<std::int64_t>(y_.size());
+  if (static_cast<std::int64_t>(order_.size()) != n) return;
+  Particles<D>& to = yStar_;  // free until the next step's predictor
+  to.resize(n);
+  idScratch_.resize(n);
+#pragma omp parallel for if (n >= parallelFrom)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const int i = order_[k];
+    to.r[k] = y_.r[i], to.v[k] = y_.v[i], to.rho[k] = y_.rho[i], to.m[k] = y_.m[i];
+    to.h[k] = y_.h[i], to.p[k] = y_.p[i], to.phase[k] = y_.phase[i];
+    idScratch_[k] = id_[i];
+  }
+  std::swap(y_, to);
+  std::swap(id_, idScratch_);
 }
 
 template class Simulation<1>;

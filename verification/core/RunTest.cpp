@@ -196,6 +196,16 @@ TEST(HydrostaticBox3D, StaysAtRest) {
   // drift (wrong continuity sign, ghosts that leak) shows as percent-level volume change.
   EXPECT_TRUE(results.check("max |V(t)/V(0) - 1|, 3-D hydrostatic box", volumeWorst, "<=", 5e-4,
                             "measured 9.0e-5; factor 5 margin"));
+  // `sph run` stores the particles in cell order every 10 steps (issue 7); the snapshots keep the
+  // order of the start. At rest each particle must be found where it started: measured 1.4e-6 m
+  // at most; a particle written in another's place would be a lattice spacing (0.0125 m) off.
+  const auto start = readDoubles(r.file, "/snapshots/00000/position");
+  const auto end = readDoubles(r.file, lastSnapshot(r.file) + "/position");
+  ASSERT_EQ(start.size(), end.size());
+  double moved = 0.0;
+  for (std::size_t k = 0; k < start.size(); ++k)
+    moved = std::max(moved, std::abs(end[k] - start[k]));
+  EXPECT_LT(moved, 1e-4) << "m: a particle of the last snapshot is not where it started";
 }
 
 }  // namespace

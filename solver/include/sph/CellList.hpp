@@ -3,13 +3,13 @@
 // their bounding box and counting-sorted by cell, so that all neighbours of a point within
 // cellSize lie in the 3^D cells around it. O(N) to build and to query.
 //
-// Cells are numbered along the points' axes in order, fastest first, except that the axis of the
-// longest extent comes last (slowest): the layers along it, which a parallel pair loop hands out
-// in bands, are then as many as the box allows (a dam break's flow is several times wider than
-// deep). Below, axis 0 is the fastest numbering axis. The three cells ix-1, ix, ix+1 of one row
-// along it are consecutive and their points form one contiguous range of the sorted order: a
-// point's neighbours lie in 3^(D-1) such ranges (forEachAdjacentRow), which a pair loop can sweep
-// without per-cell bookkeeping. With cells of half the reach, the neighbours lie within two cells
+// Cells are numbered along the points' axes in order, fastest first, except that an axis at least
+// twice as long as the last comes last (slowest): the layers along it, which a parallel pair loop
+// hands out in bands, are then many (a dam break's flow is several times wider than deep). Below,
+// axis 0 is the fastest numbering axis. The three cells ix-1, ix, ix+1 of one row along it are
+// consecutive and their points form one contiguous range of the sorted order: a point's neighbours
+// lie in 3^(D-1) such ranges (forEachAdjacentRow), which a pair loop can sweep without per-cell
+// bookkeeping. With cells of half the reach, the neighbours lie within two cells
 // (forEachAdjacentRow<2>: 5^(D-1) rows of 5 cells), a tighter box around the reach's sphere:
 // in 2-D 25/4 against 9 times the squared reach, so fewer candidates to test.
 #include <omp.h>
@@ -46,11 +46,14 @@ class CellList {
     for (std::int64_t i = 1; i < count; ++i)
       for (int a = 0; a < D; ++a)
         lo[a] = std::min(lo[a], pos(i, a)), hi[a] = std::max(hi[a], pos(i, a));
-    // The axis of the longest extent is numbered slowest (ties: the higher axis), the others keep
-    // their order.
+    // An axis at least twice as long as the last is numbered slowest (the longest such), the
+    // others keep their order. (Only a clearly longer axis: on a near-square box the points'
+    // usual lattice order, axis 0 fastest, stays the sorted order's.)
     int longest = D - 1;
     for (int a = D - 2; a >= 0; --a)
-      if (hi[a] - lo[a] > hi[longest] - lo[longest]) longest = a;
+      if (hi[a] - lo[a] >= 2.0 * (hi[D - 1] - lo[D - 1]) &&
+          hi[a] - lo[a] > hi[longest] - lo[longest])
+        longest = a;
     for (int a = 0, k = 0; a < D; ++a)
       if (a != longest) axis_[k++] = a;
     axis_[D - 1] = longest;
@@ -197,7 +200,7 @@ class CellList {
     return start_[c + std::min(Reach, dims_[0] - 1 - ix) + 1];
   }
 
-  // Layers: the cells with one index along the slowest numbering axis (the longest), each a
+  // Layers: the cells with one index along the slowest numbering axis, each a
   // contiguous range of the sorted order. layerBegin(layers()) is the end of the last.
   int layers() const {
     return dims_[D - 1];

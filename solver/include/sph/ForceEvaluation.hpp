@@ -36,6 +36,9 @@ class ForceEvaluation {
   // that the cell list fixes, so the result does not depend on the number of threads.
   void operator()(const InteractionSet<D>& set, Derivatives<D>& out);
 
+  // The entries below `count` of the last evaluated set (its fluid), in the cell list's order.
+  void cellOrder(std::size_t count, std::vector<int>& out) const;
+
   // Names of the terms the chosen loop evaluates, for the run file.
   std::vector<std::string> termNames() const;
   KernelKind kernel() const { return kernel_; }

@@ -48,6 +48,14 @@ class Simulation {
   using Reflection = std::function<void(Particles<D>&)>;
   void setReflection(Reflection r) { reflection_ = std::move(r); }
 
+  // Every `steps` accepted steps (0, the default: never) the particles are stored again in the
+  // cell order of the last force evaluation, so that the pair loop's copy reads them nearly in
+  // sequence and a thread's particles stay together (issue 7). particles() then changes order
+  // between steps; ids() gives each stored particle's index at the start, by which failures
+  // name a particle.
+  void keepCellOrder(int steps) { cellOrderEvery_ = steps; }
+  const std::vector<int>& ids() const { return id_; }
+
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
 
@@ -86,6 +94,7 @@ class Simulation {
                                        long step) const;
   void wrapPeriodic(Particles<D>& s) const;
   void reflectAtWalls(Particles<D>& s);
+  void storeInCellOrder();
 
   Scene scene_;
   Boundaries<D> bounds_;
@@ -98,6 +107,8 @@ class Simulation {
   Particles<D> y_, yStar_;
   Derivatives<D> f_, fStar_;
   InteractionSet<D> set_;
+  std::vector<int> id_, order_, idScratch_;
+  int cellOrderEvery_ = 0;
   double t_ = 0.0, dt_ = 0.0, dtFloor_ = 0.0;
   TimeStepLimit limit_ = TimeStepLimit::acoustic;
   long step_ = 0, evaluations_ = 0, reflections_ = 0;
