@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 #include "sph/EquationOfState.hpp"
@@ -51,7 +52,7 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
       forces_(scene.kernel, scene.terms, scene.beta),
       y_(std::move(initial)) {
   id_.resize(y_.size());
-  for (std::size_t i = 0; i < y_.size(); ++i) id_[i] = static_cast<int>(i);
+  std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)
     y_.p[i] = TaitEquationOfState::pressure(y_.rho[i], scene_.phases[y_.phase[i]]);
 }
