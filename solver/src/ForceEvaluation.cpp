@@ -187,7 +187,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
   const std::size_t n = set.size();
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
   double hMax = 0.0;
-#pragma omp parallel for if (nSorted >= parallelFrom) reduction(max : hMax)
+#pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
   for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
   // Cells of half the largest reach, support h_max (h_ij <= h_max): neighbours within two cells.
   // The grid may have 4 cells per point per halving, as many as the full-size cells would.

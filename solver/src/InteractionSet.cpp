@@ -15,7 +15,7 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   set.resize(n);  // the fluid entries; the halo is appended below
   set.nFluid = n;
   const std::int64_t count = static_cast<std::int64_t>(n);
-#pragma omp parallel for if (count >= parallelFrom)
+#pragma omp parallel for if (count >= parallelFrom())
   for (std::int64_t i = 0; i < count; ++i) {
     set.x[i] = fluid.r[i], set.v[i] = fluid.v[i], set.rho[i] = fluid.rho[i];
     set.m[i] = fluid.m[i], set.h[i] = fluid.h[i];
@@ -32,7 +32,7 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   for (int a = 0; a < D; ++a) {
     const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
     const std::int64_t scanned = static_cast<std::int64_t>(set.size());
-#pragma omp parallel if (scanned >= parallelFrom)
+#pragma omp parallel if (scanned >= parallelFrom())
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       auto& mine = set.nearFace[t];

@@ -74,7 +74,7 @@ template <int D>
 void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& out) {
   const std::int64_t n = static_cast<std::int64_t>(state.size());
   double hMax = 0;
-#pragma omp parallel for if (n >= parallelFrom) reduction(max : hMax)
+#pragma omp parallel for if (n >= parallelFrom()) reduction(max : hMax)
   for (std::int64_t i = 0; i < n; ++i) hMax = std::max(hMax, state.h[i]);
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
@@ -82,7 +82,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax, ghostGravity, set_);
   if (halo_) halo_(state, set_);
   forces_(set_, out);
-#pragma omp parallel for if (n >= parallelFrom)
+#pragma omp parallel for if (n >= parallelFrom())
   for (std::int64_t i = 0; i < n; ++i) out.dvdt[i] += g;  // F/rho in eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
@@ -101,7 +101,7 @@ double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
     if (bestI < 0 || (larger ? x > best : x < best)) return true;
     return x == best && i < bestI;
   };
-#pragma omp parallel if (n >= parallelFrom)
+#pragma omp parallel if (n >= parallelFrom())
   {
     double h = std::numeric_limits<double>::max(), v2 = 0, a2 = 0;
     int ih = -1, iv = -1, ia = -1;
@@ -141,7 +141,7 @@ void Simulation<D>::wrapPeriodic(Particles<D>& s) const {
     if (bounds_.face[a][0] != FaceKind::periodic) continue;
     const double lo = bounds_.lower[a], period = bounds_.upper[a] - lo;
     const std::int64_t n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for if (n >= parallelFrom)
+#pragma omp parallel for if (n >= parallelFrom())
     for (std::int64_t i = 0; i < n; ++i)
       s.r[i][a] = lo + (s.r[i][a] - lo) - period * std::floor((s.r[i][a] - lo) / period);
   }
@@ -153,7 +153,7 @@ void Simulation<D>::reflectAtWalls(Particles<D>& s) {
   const std::int64_t n = static_cast<std::int64_t>(s.size());
   long count = 0;
   double deepest = reflectionDepth_;
-#pragma omp parallel for if (n >= parallelFrom) reduction(+ : count) reduction(max : deepest)
+#pragma omp parallel for if (n >= parallelFrom()) reduction(+ : count) reduction(max : deepest)
   for (std::int64_t i = 0; i < n; ++i)
     for (int a = 0; a < D; ++a)
       for (int side = 0; side < 2; ++side) {
@@ -215,7 +215,7 @@ std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, lon
   // The first bad particle by index, whatever the thread count (a min over the shares).
   const std::int64_t n = static_cast<std::int64_t>(s.size());
   std::int64_t first = n;
-#pragma omp parallel for if (n >= parallelFrom) reduction(min : first)
+#pragma omp parallel for if (n >= parallelFrom()) reduction(min : first)
   for (std::int64_t i = 0; i < n; ++i)
     if (i < first && checkParticle(s, i, t, step)) first = i;
   if (first < n) return checkParticle(s, first, t, step);
@@ -259,7 +259,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   std::copy(y_.m.begin(), y_.m.end(), yStar_.m.begin());
   std::copy(y_.phase.begin(), y_.phase.end(), yStar_.phase.begin());
   const std::int64_t count = static_cast<std::int64_t>(n);
-  const bool parallel = count >= parallelFrom;
+  const bool parallel = count >= parallelFrom();
 #pragma omp parallel for if (parallel)
   for (std::int64_t i = 0; i < count; ++i) {
     yStar_.r[i] = y_.r[i] + dt * y_.v[i];
@@ -300,7 +300,7 @@ void Simulation<D>::storeInCellOrder() {
   Particles<D>& to = yStar_;  // free until the next step's predictor
   to.resize(n);
   idScratch_.resize(n);
-#pragma omp parallel for if (n >= parallelFrom)
+#pragma omp parallel for if (n >= parallelFrom())
   for (std::int64_t k = 0; k < n; ++k) {
     const int i = order_[k];
     to.r[k] = y_.r[i], to.v[k] = y_.v[i], to.rho[k] = y_.rho[i], to.m[k] = y_.m[i];

@@ -1,4 +1,4 @@
-// Issue 7: the thread count must not change a bit of a run. Above sph::parallelFrom particles
+// Issue 7: the thread count must not change a bit of a run. Above sph::parallelFrom() particles
 // the whole step runs in parallel (cell list, interaction set, force loop, time step, predictor,
 // corrector, wall reflections, checks); each part combines its threads' shares in a fixed order.
 #include <gtest/gtest.h>
@@ -20,7 +20,7 @@ bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
 
 // The counting sort: stable by cell (points of a cell in increasing index) with any thread count.
 TEST(ParallelCellList, OrderIsTheSerialOne) {
-  const int n = 5 * static_cast<int>(sph::parallelFrom);
+  const int n = 5 * static_cast<int>(sph::parallelFrom());
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<sph::Vec<2>> x(n);
@@ -39,7 +39,7 @@ TEST(ParallelCellList, OrderIsTheSerialOne) {
   }
 }
 
-// A dam break of 100 x 100 particles (above parallelFrom).
+// A dam break of 100 x 100 particles (above parallelFrom() for either wait policy).
 sph::Scene damBreak() {
   return sph::parseScene(R"(
 name = "parallel_dam_break"
@@ -103,7 +103,7 @@ void expectSameBits(const sph::Simulation<2>& one, const sph::Simulation<2>& two
 
 TEST(ParallelStep, ThreadCountDoesNotChangeBits) {
   const sph::Simulation<2> one = twentySteps(1, 0), two = twentySteps(2, 0);
-  ASSERT_GE(static_cast<std::int64_t>(one.particles().size()), sph::parallelFrom);
+  ASSERT_GE(static_cast<std::int64_t>(one.particles().size()), sph::parallelFrom());
   expectSameBits(one, two);
 }
 

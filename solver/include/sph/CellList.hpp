@@ -39,7 +39,7 @@ class CellList {
   template <class Pos>
   void build(std::size_t n, Pos&& pos, double cellSize, int cellsPerPoint = 4) {
     const std::int64_t count = static_cast<std::int64_t>(n);
-    const bool parallel = count >= parallelFrom;
+    const bool parallel = count >= parallelFrom();
     double lo[D], hi[D];
     for (int a = 0; a < D; ++a) lo[a] = n > 0 ? pos(0, a) : 0.0, hi[a] = lo[a];
 #pragma omp parallel for if (parallel) reduction(min : lo[:D]) reduction(max : hi[:D])
