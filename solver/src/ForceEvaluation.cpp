@@ -30,7 +30,7 @@ namespace sph {
 //   lanes summed in a fixed order at the end), j's share goes straight to j's rate record. Pass
 //   2 has no branch: the approaching-pair test of eq. 10 is a select.
 // * Threads without atomics, and the same bits for any thread count: the sorted entries are cut
-//   into bands of two layers of cells (along the slowest axis, the box's longest). A pair's j lies
+//   into bands of two layers of cells (along the cell list's slowest axis). A pair's j lies
 //   in i's band or the next, so the even bands run at once, then the odd ones; within a band
 //   entries go in sorted order. Every rate is thus summed in an order fixed by the cell list alone.
 //   Each thread takes a contiguous run of bands of about equal work (counted in the last
@@ -124,7 +124,7 @@ struct ForceEvaluation<D>::Workspace {
   // The work of each band of two cell layers, in this evaluation (bandWork, written by the band's
   // thread) and in the last (bandCost), by which the threads' shares are cut: the candidates
   // pass 1 tests plus 3 per neighbour pass 2 takes (a dam break at dx 0.01, one thread: 1.9 ns
-  // a candidate, 6.1 ns a neighbour, fitted to the bands' times; within 10 % of each band's time
+  // a candidate, 6.1 ns a neighbour, fitted to the bands' times; within 25 % of each band's time
   // where it took more than 5 us). Counted, not timed: the cut is the same in every run.
   std::vector<std::int64_t> bandCost, bandWork;
 };
