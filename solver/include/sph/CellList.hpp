@@ -69,6 +69,7 @@ class CellList {
       if (total <= static_cast<std::int64_t>(cellsPerPoint * n + 64)) break;
       size_ *= 2.0;
     }
+    inverse_ = 1.0 / size_;
     std::int64_t total = 1;
     for (int a = 0; a < D; ++a) total *= dims_[a];
     cellOf_.resize(n);
@@ -85,17 +86,25 @@ class CellList {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       const std::int64_t begin = count * t / nt, end = count * (t + 1) / nt;
       int* mine = counts_.data() + static_cast<std::size_t>(t) * (total + 1);
+      // Points in cell order (as Simulation::keepCellOrder stores them) come in runs of one
+      // cell: counted in a register, not by incrementing one memory cell again and again.
+      std::int64_t run = -1;
+      int inRun = 0;
       for (std::int64_t i = begin; i < end; ++i) {
         std::int64_t idx = 0, stride = 1;
         for (int a = 0; a < D; ++a) {
-          int k = static_cast<int>((pos(i, axis_[a]) - lo_[a]) / size_);
-          k = std::clamp(k, 0, dims_[a] - 1);
-          idx += k * stride;
+          idx += bin(pos(i, axis_[a]), a) * stride;
           stride *= dims_[a];
         }
         cellOf_[i] = idx;
-        ++mine[idx];
+        if (idx == run) {
+          ++inRun;
+          continue;
+        }
+        if (run >= 0) mine[run] += inRun;
+        run = idx, inRun = 1;
       }
+      if (run >= 0) mine[run] += inRun;
 #pragma omp barrier
 #pragma omp single
       {  // cell c's points start after all points of cells < c; thread t's after threads < t's
@@ -110,11 +119,19 @@ class CellList {
         }
         start_[total] = running;
       }
+      int k = 0;  // the next place in cell `run`
+      run = -1;
       for (std::int64_t i = begin; i < end; ++i) {
-        const int k = mine[cellOf_[i]]++;
+        const std::int64_t c = cellOf_[i];
+        if (c != run) {
+          if (run >= 0) mine[run] = k;
+          run = c, k = mine[c];
+        }
         order_[k] = static_cast<int>(i);
-        sortedCell_[k] = cellOf_[i];
+        sortedCell_[k] = c;
+        ++k;
       }
+      if (run >= 0) mine[run] = k;
     }
   }
 
@@ -146,7 +163,7 @@ class CellList {
   std::int64_t cellOf(const Vec<D>& x) const {
     std::int64_t idx = 0, stride = 1;
     for (int a = 0; a < D; ++a) {
-      const double k = std::floor((x[axis_[a]] - lo_[a]) / size_);
+      const double k = std::floor((x[axis_[a]] - lo_[a]) * inverse_);
       if (k < -1.0 || k > dims_[a]) return -1;
       idx += std::clamp(static_cast<int>(k), 0, dims_[a] - 1) * stride;
       stride *= dims_[a];
@@ -255,9 +272,15 @@ class CellList {
   }
 
  private:
+  // The cell of coordinate x along numbering axis a, clamped to the grid (a product, not a
+  // division: two divisions a point were a fifth of the build).
+  int bin(double x, int a) const {
+    return std::clamp(static_cast<int>((x - lo_[a]) * inverse_), 0, dims_[a] - 1);
+  }
+
   std::array<int, D> axis_{};   // numbering axis a (0 fastest) is the points' axis axis_[a]
   Vec<D> lo_ = Vec<D>::Zero();  // lo_, dims_: by numbering axis
-  double size_ = 1.0;
+  double size_ = 1.0, inverse_ = 1.0;
   std::array<int, D> dims_{};
   std::vector<int> start_, order_, counts_;
   std::vector<std::int64_t> cellOf_, sortedCell_;

@@ -19,8 +19,12 @@ struct InteractionSet {
   std::vector<double> rho, p, m, h, mu;
   std::vector<int> source;  // the fluid particle an entry stands for
   std::size_t nFluid = 0;
-  // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step).
-  std::vector<std::vector<std::int64_t>> nearFace;
+  // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step;
+  // a cache line each, so that two threads' appends do not contend for one).
+  struct alignas(64) NearFace {
+    std::vector<std::int64_t> entries;
+  };
+  std::vector<NearFace> nearFace;
 
   std::size_t size() const { return x.size(); }
   void clear() { resize(0); }
