@@ -212,12 +212,29 @@ std::optional<Failure> Simulation<D>::checkParticle(const Particles<D>& s, std::
 
 template <int D>
 std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, long step) const {
-  // The first bad particle by index, whatever the thread count (a min over the shares).
+  // The first bad particle by index, whatever the thread count (a min over the shares). Each
+  // particle first gets a test without branches that every good particle passes (finite fields,
+  // density in its band, inside the box's non-periodic faces); only one that fails it gets
+  // checkParticle's, which finds and names the fault (a third of the cost at 1,250 particles).
   const std::int64_t n = static_cast<std::int64_t>(s.size());
+  constexpr double huge = std::numeric_limits<double>::max();  // x <= huge: x is not inf or NaN
+  double lo[D], hi[D];
+  for (int a = 0; a < D; ++a) {
+    lo[a] = bounds_.face[a][0] == FaceKind::periodic ? -huge : bounds_.lower[a];
+    hi[a] = bounds_.face[a][1] == FaceKind::periodic ? huge : bounds_.upper[a];
+  }
+  const double bandLow = scene_.densityBand[0], bandHigh = scene_.densityBand[1];
+  const Phase* phases = scene_.phases.data();
   std::int64_t first = n;
 #pragma omp parallel for if (n >= parallelFrom()) reduction(min : first)
-  for (std::int64_t i = 0; i < n; ++i)
-    if (i < first && checkParticle(s, i, t, step)) first = i;
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double ratio = s.rho[i] / phases[s.phase[i]].rho0;
+    bool plausible = (ratio >= bandLow) & (ratio <= bandHigh) & (s.h[i] > 0) & (s.h[i] <= huge);
+    for (int a = 0; a < D; ++a)
+      plausible &=
+          (s.r[i][a] >= lo[a]) & (s.r[i][a] <= hi[a]) & (s.v[i][a] >= -huge) & (s.v[i][a] <= huge);
+    if (!plausible && i < first && checkParticle(s, i, t, step)) first = i;
+  }
   if (first < n) return checkParticle(s, first, t, step);
   if (check_) return check_(s, t, step);
   return std::nullopt;
