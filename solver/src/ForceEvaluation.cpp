@@ -1,3 +1,10 @@
+#if defined(__GNUC__) && !defined(__clang__)
+// The vector helpers here (inline, anonymous namespace) and the kernels' instantiations for vectors
+// (Kernels.hpp; only this file makes them) pass no vector across a boundary compiled elsewhere: the
+// note GCC gives on the ABI of 32-byte vectors in an x86-64-v2 build does not concern them. Before
+// the includes, since GCC checks it where the header defines the kernels.
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 #include "sph/ForceEvaluation.hpp"
 
 #include <omp.h>
@@ -39,11 +46,6 @@ namespace sph {
 //   1/(rho_i + rho_j) come from the reciprocal of their product (pairReciprocals); with AVX-512
 //   neither, but Newton steps from hardware estimates (pairInverses).
 // * All arrays live in the workspace and only grow: no allocation per step.
-#if defined(__GNUC__) && !defined(__clang__)
-// The vector helpers below are internal (inline, anonymous namespace): the note GCC gives on the
-// ABI of 32-byte vectors in an x86-64-v2 build does not concern them.
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
 namespace {
 constexpr int lanes = 4;  // one AVX2 register of doubles (two SSE2 registers on x86-64-v2)
 using Vd = double __attribute__((vector_size(lanes * sizeof(double))));
