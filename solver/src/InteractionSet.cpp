@@ -15,13 +15,13 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   const std::int64_t count = static_cast<std::int64_t>(n);
   set.resize(n);  // the fluid entries; the halo is appended below
   set.nFluid = n;
+  // One team for the fluid copy and every axis's halo (a team costs a microsecond or more to
+  // gather; the whole set about 14 us at 1,700 entries on one thread). Each thread copies a
+  // contiguous share of the fluid and, per axis, lists the entries within reach of a face in its
+  // share of the entries so far; the images are then written after those entries, each thread's
+  // at its list's offset, so the order is the serial one whatever the thread count.
   const int threads = count >= parallelFrom() ? omp_get_max_threads() : 1;
   if (static_cast<int>(set.nearFace.size()) < threads) set.nearFace.resize(threads);
-    // One team for the fluid copy and every axis's halo (a team costs a microsecond or more to
-    // gather; the whole set about 14 us at 1,700 entries on one thread). Each thread copies a
-    // contiguous share of the fluid and, per axis, lists the entries within reach of a face in its
-    // share of the entries so far; the images are then written after those entries, each thread's
-    // at its list's offset, so the order is the serial one whatever the thread count.
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
@@ -59,7 +59,8 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       }
       std::size_t g = static_cast<std::size_t>(scanned);  // this thread's first image
       for (int u = 0; u < t; ++u) g += set.nearFace[u].entries.size();
-      Vec<D>*X = set.x.data(), *V = set.v.data();
+      Vec<D>* X = set.x.data();
+      Vec<D>* V = set.v.data();
       double *rho = set.rho.data(), *p = set.p.data(), *m = set.m.data(), *h = set.h.data(),
              *mu = set.mu.data();
       int* source = set.source.data();
