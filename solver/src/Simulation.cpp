@@ -215,7 +215,7 @@ std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, lon
   // The first bad particle by index, whatever the thread count (a min over the shares). Each
   // particle first gets a test without branches that every good particle passes (finite fields,
   // density in its band, inside the box's non-periodic faces); only one that fails it gets
-  // checkParticle's, which finds and names the fault (a third of the cost at 1,250 particles).
+  // checkParticle's, which finds and names the fault.
   const std::int64_t n = static_cast<std::int64_t>(s.size());
   constexpr double huge = std::numeric_limits<double>::max();  // x <= huge: x is not inf or NaN
   double lo[D], hi[D];
