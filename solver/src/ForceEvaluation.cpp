@@ -184,8 +184,8 @@ double* aligned(std::vector<double>& store, std::size_t n) {
 }
 
 template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool VariableH, int D>
-void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluation<D>::Workspace& w,
-              Derivatives<D>& out) {
+void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
+              typename ForceEvaluation<D>::Workspace& w, Derivatives<D>& out) {
   const std::size_t n = set.size();
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
   double hMax = 0.0;
@@ -465,7 +465,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
       const double* rate = w.rate + rateWidth * k;
       out.drhodt[dst] = rate[0];
       out.dhdt[dst] = VariableH ? hs[k] / D * rate[1] : 0.0;
-      for (int a = 0; a < D; ++a) out.dvdt[dst][a] = rate[2 + a];
+      for (int a = 0; a < D; ++a) out.dvdt[dst][a] = rate[2 + a] + g[a];
     }
   }
   std::swap(w.bandCost, w.bandWork);
@@ -475,7 +475,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, typename ForceEvaluatio
 template <int D, class Kernel>
 auto chooseLoop(TermSwitches t) {
   using W = typename ForceEvaluation<D>::Workspace;
-  using Fn = void (*)(const InteractionSet<D>&, double, W&, Derivatives<D>&);
+  using Fn = void (*)(const InteractionSet<D>&, double, const Vec<D>&, W&, Derivatives<D>&);
   constexpr Fn table[8] = {
       &pairLoop<Kernel, false, false, false, D>, &pairLoop<Kernel, true, false, false, D>,
       &pairLoop<Kernel, false, true, false, D>,  &pairLoop<Kernel, true, true, false, D>,
@@ -493,8 +493,9 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms, doubl
 }
 
 template <int D>
-void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>& out) {
-  loop_(set, beta_, *work_, out);
+void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>& out,
+                                    const Vec<D>& g) {
+  loop_(set, beta_, g, *work_, out);
 }
 
 template <int D>

@@ -81,9 +81,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   const Vec<D> ghostGravity = scene_.hydrostaticGhosts ? g : Vec<D>::Zero();
   buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax, ghostGravity, set_);
   if (halo_) halo_(state, set_);
-  forces_(set_, out);
-#pragma omp parallel for if (n >= parallelFrom())
-  for (std::int64_t i = 0; i < n; ++i) out.dvdt[i] += g;  // F/rho in eq. (12)
+  forces_(set_, out, g);  // with F/rho of eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
 }

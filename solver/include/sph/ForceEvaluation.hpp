@@ -31,10 +31,12 @@ class ForceEvaluation {
  public:
   ForceEvaluation(KernelKind kernel, TermSwitches terms, double beta);
 
-  // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt.
-  // Body forces are not included. Each pair is evaluated once and every sum runs in an order
-  // that the cell list fixes, so the result does not depend on the number of threads.
-  void operator()(const InteractionSet<D>& set, Derivatives<D>& out);
+  // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt;
+  // `g`, a uniform body acceleration, is added to dv/dt as the rates are written (F/rho in eq.
+  // 12; no pass of its own). Each pair is evaluated once and every sum runs in an order that the
+  // cell list fixes, so the result does not depend on the number of threads.
+  void operator()(const InteractionSet<D>& set, Derivatives<D>& out,
+                  const Vec<D>& g = Vec<D>::Zero());
 
   // The entries below `count` of the last evaluated set (its fluid), in the cell list's order.
   void cellOrder(std::size_t count, std::vector<int>& out) const;
@@ -47,7 +49,8 @@ class ForceEvaluation {
                      // step)
 
  private:
-  using Loop = void (*)(const InteractionSet<D>&, double beta, Workspace&, Derivatives<D>&);
+  using Loop = void (*)(const InteractionSet<D>&, double beta, const Vec<D>& g, Workspace&,
+                        Derivatives<D>&);
   KernelKind kernel_;
   TermSwitches terms_;
   double beta_;
