@@ -79,13 +79,15 @@ class CellList {
     // and places a fixed, contiguous share of the points, and thread t's points of a cell go after
     // those of threads 0 .. t-1, so the order is the serial one whatever the thread count.
     const int threads = parallel ? omp_get_max_threads() : 1;
-    counts_.assign(static_cast<std::size_t>(threads) * (total + 1), 0);
-    start_.assign(total + 1, 0);
+    counts_.resize(static_cast<std::size_t>(threads) * (total + 1));
+    start_.resize(total + 1);
+    blockSum_.resize(static_cast<std::size_t>(threads) * 16);
 #pragma omp parallel num_threads(threads) if (parallel)
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       const std::int64_t begin = count * t / nt, end = count * (t + 1) / nt;
       int* mine = counts_.data() + static_cast<std::size_t>(t) * (total + 1);
+      std::fill(mine, mine + total + 1, 0);  // each thread its own counts
       // Points in cell order (as Simulation::keepCellOrder stores them) come in runs of one
       // cell: counted in a register, not by incrementing one memory cell again and again.
       std::int64_t run = -1;
@@ -106,19 +108,31 @@ class CellList {
       }
       if (run >= 0) mine[run] += inRun;
 #pragma omp barrier
-#pragma omp single
-      {  // cell c's points start after all points of cells < c; thread t's after threads < t's
-        int running = 0;
-        for (std::int64_t c = 0; c < total; ++c) {
-          start_[c] = running;
-          for (int u = 0; u < nt; ++u) {
-            int& k = counts_[static_cast<std::size_t>(u) * (total + 1) + c];
-            const int here = k;
-            k = running, running += here;
-          }
-        }
-        start_[total] = running;
+      // Cell c's points start after all points of cells < c; thread t's after threads < t's. The
+      // cells in nt blocks, one a thread: each thread sums its block's counts, then numbers its
+      // block's points from the sum of the blocks before it (the grid has about as many cells as
+      // points, so a serial sum over it would not scale).
+      const std::int64_t c0 = total * t / nt, c1 = total * (t + 1) / nt;
+      int running = 0;
+      if (nt > 1) {
+        int sum = 0;
+        for (std::int64_t c = c0; c < c1; ++c)
+          for (int u = 0; u < nt; ++u)
+            sum += counts_[static_cast<std::size_t>(u) * (total + 1) + c];
+        blockSum_[16 * t] = sum;  // a cache line a thread
+#pragma omp barrier
+        for (int u = 0; u < t; ++u) running += blockSum_[16 * u];
       }
+      for (std::int64_t c = c0; c < c1; ++c) {
+        start_[c] = running;
+        for (int u = 0; u < nt; ++u) {
+          int& k = counts_[static_cast<std::size_t>(u) * (total + 1) + c];
+          const int here = k;
+          k = running, running += here;
+        }
+      }
+      if (t == nt - 1) start_[total] = running;
+#pragma omp barrier
       int k = 0;  // the next place in cell `run`
       run = -1;
       for (std::int64_t i = begin; i < end; ++i) {
@@ -283,7 +297,7 @@ class CellList {
   Vec<D> lo_ = Vec<D>::Zero();  // lo_, dims_: by numbering axis
   double size_ = 1.0, inverse_ = 1.0;
   std::array<int, D> dims_{};
-  std::vector<int> start_, order_, counts_;
+  std::vector<int> start_, order_, counts_, blockSum_;
   std::vector<std::int64_t> cellOf_, sortedCell_;
 };
 
