@@ -16,7 +16,7 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   set.resize(n);  // the fluid entries; the halo is appended below
   set.nFluid = n;
   // One team for the fluid copy and every axis's halo (a team costs 0.6 us or more to
-  // gather on the 2-core machine; the whole set about 14 us at 1,700 entries on one thread). Each
+  // gather on the 2-core machine; the whole set about 10 us at 1,700 entries on one thread). Each
   // thread copies a contiguous share of the fluid and, per axis, lists the entries within reach of
   // a face in its share of the entries so far; the images are then written after those entries,
   // each thread's at its list's offset, so the order is the serial one whatever the thread count.
