@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "CoreRoundTrip.hpp"
 #include "Workload.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
@@ -315,26 +316,36 @@ int main(int argc, char** argv) {
                     "achieved / peak (AVX2 FMA) double flop rate",
                     "",
                     {}};
-  std::printf("\n%10s %8s %8s %12s %12s %10s %10s %10s\n", "particles", "threads", "pairs/p",
-              "ns/particle", "Mpart/s", "GFlop/s", "of AVX2", "of SSE2");
+  std::printf("\n%10s %8s %8s %12s %12s %10s %10s %10s %12s\n", "particles", "threads", "pairs/p",
+              "ns/particle", "Mpart/s", "GFlop/s", "of AVX2", "of SSE2", "core rt [ns]");
+  std::string roundTrips;  // the 2-thread rows' core-to-core round trips, for the charts
+  auto noteRoundTrip = [&](double rt) {
+    roundTrips += (roundTrips.empty() ? "" : ", ") + std::to_string(static_cast<int>(rt + 0.5));
+  };
   std::map<int, std::pair<std::vector<double>, std::vector<double>>> sc, ff;
   for (double n : sizes) {
     sph::perf::Block2D b = sph::perf::makeBlock(static_cast<std::size_t>(n));
     const double pairs = static_cast<double>(sph::perf::countPairs(b.set));
     const double nf = static_cast<double>(b.set.nFluid);
     for (double t : threadList) {
+      const double rt = t >= 2 ? sph::perf::coreRoundTrip() : -1;
+      if (rt > 0) noteRoundTrip(rt);
       omp_set_num_threads(int(t));
       sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, all, 1.0);
       const double s = timePerCall([&] { force(b.set, b.out); }, n >= 1e6 ? 0.5 : 0.2);
       const double flops = pairs * sph::perf::PairFlops::of(all) / s;
-      std::printf("%10.0f %8d %8.1f %12.1f %12.2f %10.2f %9.1f%% %9.1f%%\n", nf, int(t), pairs / nf,
-                  1e9 * s / nf, nf / s / 1e6, flops / 1e9, 100 * flops / peakAvx[int(t)],
-                  100 * flops / peakSse[int(t)]);
+      std::printf("%10.0f %8d %8.1f %12.1f %12.2f %10.2f %9.1f%% %9.1f%% %12s\n", nf, int(t),
+                  pairs / nf, 1e9 * s / nf, nf / s / 1e6, flops / 1e9,
+                  100 * flops / peakAvx[int(t)], 100 * flops / peakSse[int(t)],
+                  rt > 0 ? std::to_string(int(rt + 0.5)).c_str() : "-");
       sc[int(t)].first.push_back(nf), sc[int(t)].second.push_back(1e9 * s / nf);
       ff[int(t)].first.push_back(nf), ff[int(t)].second.push_back(flops / peakAvx[int(t)]);
     }
   }
   for (auto& [t, xy] : sc) scaling.series.push_back({std::to_string(t) + " thread(s)", xy});
+  if (!roundTrips.empty())
+    scaling.source += "; core-to-core round trip before each 2-thread size: " + roundTrips +
+                      " ns (about 50: the vCPUs share a cache; about 330: they do not)";
   for (auto& [t, xy] : ff) flopFraction.series.push_back({std::to_string(t) + " thread(s)", xy});
   flopFraction.source =
       "flops counted from the source (perf/Workload.hpp: each pair once, " +
@@ -386,21 +397,31 @@ int main(int argc, char** argv) {
     // t = 1.3 s, 2 threads), measured on this kind of 2-core machine (issue 7).
     const std::map<double, std::array<double, 3>> peer{
         {0.01, {1484, 12411, 5.2}}, {0.005, {5467, 26763, 57.5}}, {0.0025, {20933, 56345, 466.0}}};
-    std::printf("\n%8s %8s %10s %8s %8s %10s %12s %12s %10s %18s\n", "dx", "threads", "particles",
-                "steps", "evals", "wall [s]", "Mpart-ev/s", "ns/part-ev", "peer [s]", "state hash");
+    std::printf("\n%8s %8s %10s %8s %8s %10s %12s %12s %10s %18s %14s\n", "dx", "threads",
+                "particles", "steps", "evals", "wall [s]", "Mpart-ev/s", "ns/part-ev", "peer [s]",
+                "state hash", "core rt [ns]");
+    std::string dbTrips;
     std::map<int, std::pair<std::vector<double>, std::vector<double>>> ours;
     std::vector<double> px, py;
     for (double dx : dxs) {
       std::map<int, std::uint64_t> hashes;
       for (double t : threadList) {
+        // The round trip before and after: the placement may change during a long run.
+        const double before = t >= 2 ? sph::perf::coreRoundTrip() : -1;
         const auto r = runDamBreak(sceneText, dx, endTime, int(t));
+        const double after = t >= 2 ? sph::perf::coreRoundTrip() : -1;
+        std::string trip = "-";
+        if (before > 0) {
+          trip = std::to_string(int(before + 0.5)) + "/" + std::to_string(int(after + 0.5));
+          dbTrips += (dbTrips.empty() ? "" : ", ") + trip;
+        }
         const double pe = double(r.particles) * double(r.evaluations);
         const auto p = peer.find(dx);
-        std::printf("%8g %8d %10zu %8ld %8ld %10.2f %12.2f %12.1f %10s %18llx%s\n", dx, int(t),
-                    r.particles, r.steps, r.evaluations, r.wall, pe / r.wall / 1e6,
-                    1e9 * r.wall / pe,
-                    p != peer.end() ? std::to_string(p->second[2]).substr(0, 5).c_str() : "-",
-                    static_cast<unsigned long long>(r.hash), r.failed ? " FAILED" : "");
+        std::printf(
+            "%8g %8d %10zu %8ld %8ld %10.2f %12.2f %12.1f %10s %18llx %14s%s\n", dx, int(t),
+            r.particles, r.steps, r.evaluations, r.wall, pe / r.wall / 1e6, 1e9 * r.wall / pe,
+            p != peer.end() ? std::to_string(p->second[2]).substr(0, 5).c_str() : "-",
+            static_cast<unsigned long long>(r.hash), trip.c_str(), r.failed ? " FAILED" : "");
         std::fflush(stdout);
         hashes[int(t)] = r.hash;
         passed = passed && !r.failed;
@@ -424,6 +445,9 @@ int main(int argc, char** argv) {
             {}};
     for (auto& [t, xy] : ours)
       db.series.push_back({"ours, " + std::to_string(t) + " thread(s)", xy});
+    if (!dbTrips.empty())
+      db.source += "; our 2-thread runs' core-to-core round trip before/after: " + dbTrips +
+                   " ns (about 50: the vCPUs share a cache; about 330: they do not)";
     if (!px.empty()) db.series.push_back({"DualSPHysics 5.4, 2 threads", {px, py}});
     db.write(std::filesystem::path(outDir) / "perf_dam_break.json");
   }

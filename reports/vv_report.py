@@ -118,7 +118,8 @@ def perf_items(directory, out: Path, quick: bool) -> list:
             items.append({"path": str(path), "title": path.name, "columns": columns,
                           "rows": [b for b in obj["benchmarks"] if isinstance(b, dict)],
                           "context": {k: v for k, v in obj.get("context", {}).items()
-                                      if k in ("date", "host_name", "num_cpus", "mhz_per_cpu", "library_build_type")}})
+                                      if k in ("date", "host_name", "num_cpus", "mhz_per_cpu", "library_build_type",
+                                               "core_round_trip_ns")}})
         else:
             why = obj if isinstance(obj, str) else \
                 'expected {"benchmark", "x_label", "y_label", "series": [{"label", "x", "y"}]} or Google Benchmark JSON'
