@@ -345,7 +345,7 @@ int main(int argc, char** argv) {
   for (auto& [t, xy] : sc) scaling.series.push_back({std::to_string(t) + " thread(s)", xy});
   if (!roundTrips.empty())
     scaling.source += "; core-to-core round trip before each 2-thread size: " + roundTrips +
-                      " ns (about 50: the vCPUs share a cache; about 330: they do not)";
+                      " ns (50-80: the vCPUs share a cache; 310-380: they do not)";
   for (auto& [t, xy] : ff) flopFraction.series.push_back({std::to_string(t) + " thread(s)", xy});
   flopFraction.source =
       "flops counted from the source (perf/Workload.hpp: each pair once, " +
@@ -447,7 +447,7 @@ int main(int argc, char** argv) {
       db.series.push_back({"ours, " + std::to_string(t) + " thread(s)", xy});
     if (!dbTrips.empty())
       db.source += "; our 2-thread runs' core-to-core round trip before/after: " + dbTrips +
-                   " ns (about 50: the vCPUs share a cache; about 330: they do not)";
+                   " ns (50-80: the vCPUs share a cache; 310-380: they do not)";
     if (!px.empty()) db.series.push_back({"DualSPHysics 5.4, 2 threads", {px, py}});
     db.write(std::filesystem::path(outDir) / "perf_dam_break.json");
   }
