@@ -4,8 +4,8 @@
 // runs. On the 2-core machine a cache line's round trip between the two threads took either 50-80
 // ns or 310-380 ns, changing every few seconds to minutes, and every 2-thread figure follows it:
 // the force evaluation at 1,024 particles (a 2-D block, all terms) took 70 us in the first case
-// and 100-105 us in the second, one thread 108 us; the dam break at dx 0.01 on two threads 2.5-2.8
-// s or 4.4-4.7 s (issue 7). The benchmarks print it beside their 2-thread figures.
+// and 100-110 us in the second, one thread 108 us; the dam break at dx 0.01 on two threads 2.5-2.8
+// s or 4.3-4.7 s (issue 7). The benchmarks print it beside their 2-thread figures.
 #include <omp.h>
 
 #include <algorithm>
