@@ -154,7 +154,7 @@ std::string withDx(std::string text, double dx, double endTime) {
 struct DamBreakResult {
   std::size_t particles = 0;
   long steps = 0, evaluations = 0;
-  double wall = 0;
+  double wall = 0, onAll = 1;  // onAll: the fraction of steps on all threads (ThreadTuner)
   std::uint64_t hash = 0;
   bool failed = false;
 };
@@ -197,6 +197,13 @@ DamBreakResult runDamBreak(const std::string& sceneText, double dx, double endTi
     return v;
   };
   r.steps = integer("steps"), r.evaluations = integer("force_evaluations");
+  {
+    const hid_t a =
+        H5Aopen_by_name(file, "/metrics", "steps_on_all_threads", H5P_DEFAULT, H5P_DEFAULT);
+    if (a < 0 || H5Aread(a, H5T_NATIVE_DOUBLE, &r.onAll) < 0)
+      throw std::runtime_error("sph_bench: no /metrics steps_on_all_threads in " + path);
+    H5Aclose(a);
+  }
   r.particles = static_cast<std::size_t>(integer("particles"));
   // The last snapshot (zero-padded names: the last by name).
   const hid_t snapshots = H5Gopen2(file, "/snapshots", H5P_DEFAULT);
@@ -397,9 +404,9 @@ int main(int argc, char** argv) {
     // t = 1.3 s, 2 threads), measured on this kind of 2-core machine (issue 7).
     const std::map<double, std::array<double, 3>> peer{
         {0.01, {1484, 12411, 5.2}}, {0.005, {5467, 26763, 57.5}}, {0.0025, {20933, 56345, 466.0}}};
-    std::printf("\n%8s %8s %10s %8s %8s %10s %12s %12s %10s %18s %14s\n", "dx", "threads",
+    std::printf("\n%8s %8s %10s %8s %8s %10s %12s %12s %10s %18s %14s %7s\n", "dx", "threads",
                 "particles", "steps", "evals", "wall [s]", "Mpart-ev/s", "ns/part-ev", "peer [s]",
-                "state hash", "core rt [ns]");
+                "state hash", "core rt [ns]", "on all");
     std::string dbTrips;
     std::map<int, std::pair<std::vector<double>, std::vector<double>>> ours;
     std::vector<double> px, py;
@@ -417,11 +424,12 @@ int main(int argc, char** argv) {
         }
         const double pe = double(r.particles) * double(r.evaluations);
         const auto p = peer.find(dx);
-        std::printf(
-            "%8g %8d %10zu %8ld %8ld %10.2f %12.2f %12.1f %10s %18llx %14s%s\n", dx, int(t),
-            r.particles, r.steps, r.evaluations, r.wall, pe / r.wall / 1e6, 1e9 * r.wall / pe,
-            p != peer.end() ? std::to_string(p->second[2]).substr(0, 5).c_str() : "-",
-            static_cast<unsigned long long>(r.hash), trip.c_str(), r.failed ? " FAILED" : "");
+        std::printf("%8g %8d %10zu %8ld %8ld %10.2f %12.2f %12.1f %10s %18llx %14s %6.0f%%%s\n", dx,
+                    int(t), r.particles, r.steps, r.evaluations, r.wall, pe / r.wall / 1e6,
+                    1e9 * r.wall / pe,
+                    p != peer.end() ? std::to_string(p->second[2]).substr(0, 5).c_str() : "-",
+                    static_cast<unsigned long long>(r.hash), trip.c_str(), 100 * r.onAll,
+                    r.failed ? " FAILED" : "");
         std::fflush(stdout);
         hashes[int(t)] = r.hash;
         passed = passed && !r.failed;
@@ -440,7 +448,9 @@ int main(int argc, char** argv) {
     Json db{title.str(),
             "particles",
             "wall time [s]",
-            "ours: quadratic kernel, all terms, predictor-corrector (2 force evaluations a step); "
+            "ours: quadratic kernel, all terms, predictor-corrector (2 force evaluations a step), "
+            "on up to the threads named (sph run's ThreadTuner: the column 'on all' of the "
+            "benchmark's table gives the share of steps on all of them); "
             "DualSPHysics 5.4: Wendland, 1 force evaluation a step, 2 threads (issue 7)",
             {}};
     for (auto& [t, xy] : ours)

@@ -13,6 +13,7 @@
 #include "sph/InitialParticles.hpp"
 #include "sph/RunFile.hpp"
 #include "sph/Simulation.hpp"
+#include "sph/ThreadTuner.hpp"
 
 namespace sph {
 
@@ -150,9 +151,14 @@ int run(const Scene& scene, const RunOptions& opt) {
   const bool progress = opt.progress && isatty(STDERR_FILENO);
   auto lastPrint = clock::now();
   const long step0 = sim.step();
+  const int maxThreads = omp_get_max_threads();
+  ThreadTuner tuner(opt.fixedThreads ? 1 : maxThreads);
   std::optional<Failure> failure;
   while (sim.time() < scene.endTime * (1 - 1e-12)) {
+    if (!opt.fixedThreads) omp_set_num_threads(tuner.threads());
+    const auto stepStart = clock::now();
     failure = sim.advance(std::min(nextSnapshot, scene.endTime) - sim.time());
+    tuner.took(std::chrono::duration<double>(clock::now() - stepStart).count());
     if (failure) break;
     const bool atSnapshot = sim.time() >= nextSnapshot * (1 - 1e-12);
     if (atSnapshot || sim.step() % scene.seriesEvery == 0) record();
@@ -170,6 +176,11 @@ int run(const Scene& scene, const RunOptions& opt) {
     }
   }
   if (progress) std::fprintf(stderr, "\n");
+  omp_set_num_threads(maxThreads);
+  const double onAll =
+      opt.fixedThreads || maxThreads == 1
+          ? 1.0
+          : double(tuner.stepsOnAll()) / std::max(1L, tuner.stepsOnAll() + tuner.stepsOnOne());
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
   if (failure) {
     file.attribute("status", std::string("unstable"));
@@ -188,6 +199,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("particles", std::int64_t(sim.particles().size()), m);
   file.attribute("end_time", sim.time(), m);
   file.attribute("force_evaluations", std::int64_t(sim.forceEvaluations()), m);
+  file.attribute("steps_on_all_threads", onAll, m);  // the rest on one (ThreadTuner)
   file.attribute("wall_reflections", std::int64_t(sim.wallReflections()), m);
   file.attribute("particle_evaluations_per_s",
                  double(sim.forceEvaluations()) * sim.particles().size() / wall, m);
@@ -203,8 +215,11 @@ int run(const Scene& scene, const RunOptions& opt) {
     std::printf("  max volume variation %.4f %%", 100 * series.maxVariation[0]);
     for (std::size_t k = 0; k < scene.phases.size(); ++k)
       std::printf("   %s %.4f %%", scene.phases[k].name.c_str(), 100 * series.maxVariation[k + 1]);
-    std::printf("\n  wall reflections %ld\n  run file %s\n", sim.wallReflections(),
-                file.path().c_str());
+    std::printf("\n  wall reflections %ld\n", sim.wallReflections());
+    if (maxThreads > 1)
+      std::printf("  steps on %d threads %.0f %%, on one %.0f %%%s\n", maxThreads, 100 * onAll,
+                  100 * (1 - onAll), opt.fixedThreads ? " (--fixed-threads)" : "");
+    std::printf("  run file %s\n", file.path().c_str());
   }
   if (failure) {
     std::cerr << scene.file << ": numerical failure (" << name(failure->cause)

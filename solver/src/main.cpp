@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
   run->add_option("--threads", options.threads, "OpenMP threads (default: all)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--quiet", options.quiet, "print nothing but errors");
+  run->add_flag("--fixed-threads", options.fixedThreads,
+                "run every step on --threads threads (default: time them against one thread now "
+                "and then and run the faster; results are the same either way)");
 
   auto* check = app.add_subcommand("check", "read and validate a scene file, run nothing");
   check->add_option("scene", scenePath, "scene file (TOML)")->required();

@@ -12,8 +12,10 @@ enum ExitCode { exitDone = 0, exitBadInput = 2, exitNumericalFailure = 3, exitOu
 
 struct RunOptions {
   std::string outDir = ".";
-  int threads = 0;        // 0: OpenMP's default
-  bool progress = false;  // a progress line on stderr (only on a terminal)
+  int threads = 0;            // 0: OpenMP's default
+  bool fixedThreads = false;  // every step on `threads`; else the faster of them and one
+                              // (ThreadTuner)
+  bool progress = false;      // a progress line on stderr (only on a terminal)
   bool quiet = false;
 };
 

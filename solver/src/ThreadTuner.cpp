@@ -1,0 +1,52 @@
+#include "sph/ThreadTuner.hpp"
+
+#include <algorithm>
+
+namespace sph {
+
+ThreadTuner::ThreadTuner(int maxThreads, int window, long shortestGap, long longestGap)
+    : max_(std::max(1, maxThreads)),
+      window_(std::max(1, window)),
+      shortestGap_(std::max(1L, shortestGap)),
+      longestGap_(std::max(shortestGap_, longestGap)),
+      gap_(shortestGap_) {
+  if (max_ == 1) phase_ = Phase::run, choice_ = 1;
+}
+
+int ThreadTuner::threads() const {
+  switch (phase_) {
+    case Phase::trialAll:
+      return max_;
+    case Phase::trialOne:
+      return 1;
+    default:
+      return choice_;
+  }
+}
+
+void ThreadTuner::took(double seconds) {
+  (threads() == 1 ? stepsOnOne_ : stepsOnAll_) += 1;
+  if (max_ == 1) return;
+  ++inPhase_;
+  const bool counted = inPhase_ > 1;  // the first step after a switch settles the threads
+  switch (phase_) {
+    case Phase::trialAll:
+      if (counted) timeAll_ += seconds;
+      if (inPhase_ > window_) phase_ = Phase::trialOne, inPhase_ = 0;
+      break;
+    case Phase::trialOne:
+      if (counted) timeOne_ += seconds;
+      if (inPhase_ > window_) {
+        const int choice = timeOne_ < timeAll_ ? 1 : max_;
+        gap_ = choice == choice_ ? std::min(2 * gap_, longestGap_) : shortestGap_;
+        choice_ = choice;
+        phase_ = Phase::run, inPhase_ = 0, timeAll_ = timeOne_ = 0;
+      }
+      break;
+    case Phase::run:
+      if (inPhase_ >= gap_) phase_ = Phase::trialAll, inPhase_ = 0;
+      break;
+  }
+}
+
+}  // namespace sph
