@@ -86,16 +86,29 @@ std::optional<std::string> stringAttribute(const std::string& file, const std::s
   return out;
 }
 
-std::optional<std::int64_t> integerAttribute(const std::string& file, const std::string& object,
-                                             const std::string& name) {
+namespace {
+template <class T>
+std::optional<T> numericAttribute(const std::string& file, const std::string& object,
+                                  const std::string& name, hid_t type) {
   File f(file);
   const hid_t a = openAttribute(f, object, name);
   if (a < 0) return std::nullopt;
-  std::int64_t value = 0;
-  const herr_t status = H5Aread(a, H5T_NATIVE_INT64, &value);
+  T value{};
+  const herr_t status = H5Aread(a, type, &value);
   H5Aclose(a);
   if (status < 0) return std::nullopt;
   return value;
+}
+}  // namespace
+
+std::optional<std::int64_t> integerAttribute(const std::string& file, const std::string& object,
+                                             const std::string& name) {
+  return numericAttribute<std::int64_t>(file, object, name, H5T_NATIVE_INT64);
+}
+
+std::optional<double> doubleAttribute(const std::string& file, const std::string& object,
+                                      const std::string& name) {
+  return numericAttribute<double>(file, object, name, H5T_NATIVE_DOUBLE);
 }
 
 std::optional<std::vector<std::uint64_t>> datasetShape(const std::string& file,

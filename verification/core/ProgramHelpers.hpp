@@ -27,6 +27,8 @@ std::optional<std::string> stringAttribute(const std::string& file, const std::s
                                            const std::string& name);
 std::optional<std::int64_t> integerAttribute(const std::string& file, const std::string& object,
                                              const std::string& name);
+std::optional<double> doubleAttribute(const std::string& file, const std::string& object,
+                                      const std::string& name);
 std::optional<std::vector<std::uint64_t>> datasetShape(const std::string& file,
                                                        const std::string& dataset);
 std::vector<double> readDoubles(const std::string& file, const std::string& dataset);

@@ -169,6 +169,31 @@ TEST(RunFile, XdmfMatchesHdf5) {
     EXPECT_EQ(datasetShape(r.file, std::string("/series/") + c), *n) << c;
 }
 
+// `sph run` times its steps on all threads and on one now and then and runs the faster
+// (ThreadTuner); the run file says how many steps ran on all. The small tank (about 120 steps)
+// gets through the first trial (25 steps on all threads, then 25 on one) and so runs on both, and
+// ends where the same run on fixed threads ends, to the bit.
+TEST(RunFile, SaysHowManyStepsRanOnAllThreads) {
+  const std::string tuned = freshOutputDirectory() + "/tuned", fixed = tuned + "/../fixed";
+  const std::string scene = "'" + scenePath("small_tank.toml") + "' --threads 2 --quiet";
+  ASSERT_EQ(runSph("run " + scene + " --out '" + tuned + "'").exitCode, 0);
+  ASSERT_EQ(runSph("run " + scene + " --fixed-threads --out '" + fixed + "'").exitCode, 0);
+  const std::string a = tuned + "/small_tank.h5", b = fixed + "/small_tank.h5";
+  const auto steps = integerAttribute(a, "/metrics", "steps");
+  ASSERT_TRUE(steps.has_value());
+  ASSERT_GE(*steps, 51) << "too short a run for a trial on both counts";
+  const auto onAllTuned = doubleAttribute(a, "/metrics", "steps_on_all_threads");
+  const auto onAllFixed = doubleAttribute(b, "/metrics", "steps_on_all_threads");
+  ASSERT_TRUE(onAllTuned.has_value() && onAllFixed.has_value());
+  EXPECT_GT(*onAllTuned, 0.0);
+  EXPECT_LT(*onAllTuned, 1.0);
+  EXPECT_EQ(*onAllFixed, 1.0);
+  const std::string last = lastSnapshot(a);
+  ASSERT_EQ(last, lastSnapshot(b));
+  for (const char* field : {"/position", "/velocity", "/density", "/pressure"})
+    EXPECT_EQ(readDoubles(a, last + field), readDoubles(b, last + field)) << field;
+}
+
 // A column at rest in a 3-D box, started at the hydrostatic pressure with hydrostatic ghosts
 // (scenes/hydrostatic_box_3d.toml, 8^3 particles, 289 steps). The run must end stable and
 // the spurious speed stay small against sqrt(g H).
