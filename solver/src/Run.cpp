@@ -152,10 +152,10 @@ int run(const Scene& scene, const RunOptions& opt) {
   auto lastPrint = clock::now();
   const long step0 = sim.step();
   const int maxThreads = omp_get_max_threads();
-  ThreadTuner tuner(opt.fixedThreads ? 1 : maxThreads);
+  ThreadTuner tuner(maxThreads, opt.fixedThreads);
   std::optional<Failure> failure;
   while (sim.time() < scene.endTime * (1 - 1e-12)) {
-    if (!opt.fixedThreads) omp_set_num_threads(tuner.threads());
+    omp_set_num_threads(tuner.threads());
     const auto stepStart = clock::now();
     failure = sim.advance(std::min(nextSnapshot, scene.endTime) - sim.time());
     tuner.took(std::chrono::duration<double>(clock::now() - stepStart).count());
@@ -177,10 +177,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   }
   if (progress) std::fprintf(stderr, "\n");
   omp_set_num_threads(maxThreads);
-  const double onAll =
-      opt.fixedThreads || maxThreads == 1
-          ? 1.0
-          : double(tuner.stepsOnAll()) / std::max(1L, tuner.stepsOnAll() + tuner.stepsOnOne());
+  const double onAll = tuner.shareOnAll();
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
   if (failure) {
     file.attribute("status", std::string("unstable"));

@@ -4,13 +4,18 @@
 
 namespace sph {
 
-ThreadTuner::ThreadTuner(int maxThreads, int window, long shortestGap, long longestGap)
+ThreadTuner::ThreadTuner(int maxThreads, bool fixed, int window, long shortestGap, long longestGap)
     : max_(std::max(1, maxThreads)),
       window_(std::max(1, window)),
       shortestGap_(std::max(1L, shortestGap)),
       longestGap_(std::max(shortestGap_, longestGap)),
       gap_(shortestGap_) {
-  if (max_ == 1) phase_ = Phase::run, choice_ = 1;
+  if (fixed || max_ == 1) phase_ = Phase::run, choice_ = max_, fixed_ = true;
+}
+
+double ThreadTuner::shareOnAll() const {
+  const long steps = stepsOnAll_ + stepsOnOne_;
+  return steps > 0 ? double(stepsOnAll_) / double(steps) : 1.0;
 }
 
 int ThreadTuner::threads() const {
@@ -25,8 +30,8 @@ int ThreadTuner::threads() const {
 }
 
 void ThreadTuner::took(double seconds) {
-  (threads() == 1 ? stepsOnOne_ : stepsOnAll_) += 1;
-  if (max_ == 1) return;
+  (threads() == max_ ? stepsOnAll_ : stepsOnOne_) += 1;
+  if (fixed_) return;
   ++inPhase_;
   const bool counted = inPhase_ > 1;  // the first step after a switch settles the threads
   switch (phase_) {

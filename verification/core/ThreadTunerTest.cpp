@@ -24,13 +24,20 @@ std::vector<int> counts(sph::ThreadTuner& tuner, int steps,
 TEST(ThreadTuner, OneThreadAvailableMeansOne) {
   sph::ThreadTuner tuner(1);
   for (int t : counts(tuner, 100, [](int, int) { return 1.0; })) EXPECT_EQ(t, 1);
-  EXPECT_EQ(tuner.stepsOnOne(), 100);
+  EXPECT_EQ(tuner.shareOnAll(), 1.0);  // all of the one thread
+}
+
+TEST(ThreadTuner, FixedMeansAllThreadsEveryStep) {
+  sph::ThreadTuner tuner(2, true);
+  for (int t : counts(tuner, 100, [](int threads, int) { return threads == 1 ? 1.0 : 2.0; }))
+    EXPECT_EQ(t, 2);
+  EXPECT_EQ(tuner.stepsOnAll(), 100);
 }
 
 TEST(ThreadTuner, TrialsThenTheFasterCount) {
   // window 4, gap 10: 5 steps on all (the first not counted), 5 on one, then 10 on the faster.
   for (const bool oneFaster : {true, false}) {
-    sph::ThreadTuner tuner(2, 4, 10, 10);
+    sph::ThreadTuner tuner(2, false, 4, 10, 10);
     const auto used = counts(
         tuner, 20, [&](int threads, int) { return (threads == 1) == oneFaster ? 1.0 : 2.0; });
     for (int k = 0; k < 5; ++k) EXPECT_EQ(used[k], 2) << k;
@@ -41,7 +48,7 @@ TEST(ThreadTuner, TrialsThenTheFasterCount) {
 
 TEST(ThreadTuner, FirstStepOfATrialIsNotCounted) {
   // All threads faster, but the first step on them (waking the threads) is slow.
-  sph::ThreadTuner tuner(2, 4, 10, 10);
+  sph::ThreadTuner tuner(2, false, 4, 10, 10);
   const auto used = counts(tuner, 11, [](int threads, int k) {
     return threads == 1 ? 1.0 : k == 0 ? 100 : 0.5;
   });
@@ -50,7 +57,7 @@ TEST(ThreadTuner, FirstStepOfATrialIsNotCounted) {
 
 TEST(ThreadTuner, TrialsSpaceOutWhileTheChoiceHolds) {
   // window 1 (2 steps a count), gaps 4, 8, 16, 16: trials start at steps 0, 8, 20, 40, 60.
-  sph::ThreadTuner tuner(2, 1, 4, 16);
+  sph::ThreadTuner tuner(2, false, 1, 4, 16);
   const auto used = counts(tuner, 70, [](int threads, int) { return threads == 1 ? 1.0 : 0.5; });
   std::vector<int> trialsOnOne;
   for (int k = 0; k < 70; ++k)
@@ -60,7 +67,7 @@ TEST(ThreadTuner, TrialsSpaceOutWhileTheChoiceHolds) {
 
 TEST(ThreadTuner, AChangedChoiceShortensTheGapAgain) {
   // One thread faster for the first 30 steps, then all threads.
-  sph::ThreadTuner tuner(2, 1, 4, 16);
+  sph::ThreadTuner tuner(2, false, 1, 4, 16);
   const auto used =
       counts(tuner, 60, [](int threads, int k) { return (threads == 1) == (k < 30) ? 1.0 : 2.0; });
   // Trials at 0 (gap 4: run 4-7), 8 (gap 8: 12-19), 20 (gap 16: 24-39), 40: all faster now, gap

@@ -8,12 +8,12 @@
 // A trial times `window` steps on all threads and `window` on one (each after one step to settle,
 // not counted); the faster count then runs until the next trial. The gap between trials doubles
 // while the choice stays the same (a trial on the slower count costs time), up to `longestGap`
-// steps, and goes back to `shortestGap` when it changes.
+// steps, and goes back to `shortestGap` when it changes. `fixed`: every step on all threads.
 namespace sph {
 
 class ThreadTuner {
  public:
-  explicit ThreadTuner(int maxThreads, int window = 24, long shortestGap = 512,
+  explicit ThreadTuner(int maxThreads, bool fixed = false, int window = 24, long shortestGap = 512,
                        long longestGap = 8192);
 
   int threads() const;        // for the next step
@@ -21,6 +21,7 @@ class ThreadTuner {
 
   long stepsOnAll() const { return stepsOnAll_; }
   long stepsOnOne() const { return stepsOnOne_; }
+  double shareOnAll() const;  // of the steps so far (1 before the first)
 
  private:
   enum class Phase { trialAll, trialOne, run };
@@ -30,6 +31,7 @@ class ThreadTuner {
   long inPhase_ = 0;  // steps taken in this phase
   double timeAll_ = 0, timeOne_ = 0;
   int choice_ = 0;  // 0 before the first trial
+  bool fixed_ = false;
   long stepsOnAll_ = 0, stepsOnOne_ = 0;
 };
 
