@@ -188,22 +188,16 @@ DamBreakResult runDamBreak(const std::string& sceneText, double dx, double endTi
   const std::string path = (scratch / (scene.name + ".h5")).string();
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) throw std::runtime_error("sph_bench: cannot read back " + path);
-  auto integer = [&](const char* name) {
-    std::int64_t v = 0;
+  auto metric = [&](const char* name, auto value, hid_t type) {  // value: the type to read
     const hid_t a = H5Aopen_by_name(file, "/metrics", name, H5P_DEFAULT, H5P_DEFAULT);
-    if (a < 0 || H5Aread(a, H5T_NATIVE_INT64, &v) < 0)
+    if (a < 0 || H5Aread(a, type, &value) < 0)
       throw std::runtime_error("sph_bench: no /metrics " + std::string(name) + " in " + path);
     H5Aclose(a);
-    return v;
+    return value;
   };
+  auto integer = [&](const char* name) { return metric(name, std::int64_t{}, H5T_NATIVE_INT64); };
   r.steps = integer("steps"), r.evaluations = integer("force_evaluations");
-  {
-    const hid_t a =
-        H5Aopen_by_name(file, "/metrics", "steps_on_all_threads", H5P_DEFAULT, H5P_DEFAULT);
-    if (a < 0 || H5Aread(a, H5T_NATIVE_DOUBLE, &r.onAll) < 0)
-      throw std::runtime_error("sph_bench: no /metrics steps_on_all_threads in " + path);
-    H5Aclose(a);
-  }
+  r.onAll = metric("steps_on_all_threads", 0.0, H5T_NATIVE_DOUBLE);
   r.particles = static_cast<std::size_t>(integer("particles"));
   // The last snapshot (zero-padded names: the last by name).
   const hid_t snapshots = H5Gopen2(file, "/snapshots", H5P_DEFAULT);
@@ -325,10 +319,8 @@ int main(int argc, char** argv) {
                     {}};
   std::printf("\n%10s %8s %8s %12s %12s %10s %10s %10s %12s\n", "particles", "threads", "pairs/p",
               "ns/particle", "Mpart/s", "GFlop/s", "of AVX2", "of SSE2", "core rt [ns]");
+  auto ns = [](double rt) { return std::to_string(static_cast<int>(rt + 0.5)); };
   std::string roundTrips;  // the 2-thread rows' core-to-core round trips, for the charts
-  auto noteRoundTrip = [&](double rt) {
-    roundTrips += (roundTrips.empty() ? "" : ", ") + std::to_string(static_cast<int>(rt + 0.5));
-  };
   std::map<int, std::pair<std::vector<double>, std::vector<double>>> sc, ff;
   for (double n : sizes) {
     sph::perf::Block2D b = sph::perf::makeBlock(static_cast<std::size_t>(n));
@@ -336,7 +328,7 @@ int main(int argc, char** argv) {
     const double nf = static_cast<double>(b.set.nFluid);
     for (double t : threadList) {
       const double rt = t >= 2 ? sph::perf::coreRoundTrip() : -1;
-      if (rt > 0) noteRoundTrip(rt);
+      if (rt > 0) roundTrips += (roundTrips.empty() ? "" : ", ") + ns(rt);
       omp_set_num_threads(int(t));
       sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, all, 1.0);
       const double s = timePerCall([&] { force(b.set, b.out); }, n >= 1e6 ? 0.5 : 0.2);
@@ -344,7 +336,7 @@ int main(int argc, char** argv) {
       std::printf("%10.0f %8d %8.1f %12.1f %12.2f %10.2f %9.1f%% %9.1f%% %12s\n", nf, int(t),
                   pairs / nf, 1e9 * s / nf, nf / s / 1e6, flops / 1e9,
                   100 * flops / peakAvx[int(t)], 100 * flops / peakSse[int(t)],
-                  rt > 0 ? std::to_string(int(rt + 0.5)).c_str() : "-");
+                  rt > 0 ? ns(rt).c_str() : "-");
       sc[int(t)].first.push_back(nf), sc[int(t)].second.push_back(1e9 * s / nf);
       ff[int(t)].first.push_back(nf), ff[int(t)].second.push_back(flops / peakAvx[int(t)]);
     }
@@ -419,7 +411,7 @@ int main(int argc, char** argv) {
         const double after = t >= 2 ? sph::perf::coreRoundTrip() : -1;
         std::string trip = "-";
         if (before > 0) {
-          trip = std::to_string(int(before + 0.5)) + "/" + std::to_string(int(after + 0.5));
+          trip = ns(before) + "/" + ns(after);
           dbTrips += (dbTrips.empty() ? "" : ", ") + trip;
         }
         const double pe = double(r.particles) * double(r.evaluations);

@@ -31,7 +31,7 @@ TEST(ThreadTuner, FixedMeansAllThreadsEveryStep) {
   sph::ThreadTuner tuner(2, true);
   for (int t : counts(tuner, 100, [](int threads, int) { return threads == 1 ? 1.0 : 2.0; }))
     EXPECT_EQ(t, 2);
-  EXPECT_EQ(tuner.stepsOnAll(), 100);
+  EXPECT_EQ(tuner.shareOnAll(), 1.0);
 }
 
 TEST(ThreadTuner, TrialsThenTheFasterCount) {

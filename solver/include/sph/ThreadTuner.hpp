@@ -19,8 +19,6 @@ class ThreadTuner {
   int threads() const;        // for the next step
   void took(double seconds);  // the wall time of the step just run on threads()
 
-  long stepsOnAll() const { return stepsOnAll_; }
-  long stepsOnOne() const { return stepsOnOne_; }
   double shareOnAll() const;  // of the steps so far (1 before the first)
 
  private:
