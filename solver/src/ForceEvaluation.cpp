@@ -290,6 +290,16 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
     constexpr double reachFactor2 = 0.25 * Kernel::support * Kernel::support;
     const Vi iota = {0, 1, 2, 3};
     static_assert(lanes == 4);
+    // A local copy: through the reference, every store to a rate record could change beta, and
+    // the loop would reload it and multiply again for each vector of pairs.
+    const double halfBeta = 0.5 * beta;
+    // a . b over the first D components (the third, zero in 2-D, is not added: x + 0 is an
+    // instruction, since x might be -0).
+    auto dot = [](Vd ax, Vd ay, Vd az, Vd bx, Vd by, Vd bz) {
+      if constexpr (D == 1) return ax * bx;
+      if constexpr (D == 2) return ax * bx + ay * by;
+      return ax * bx + ay * by + az * bz;
+    };
     auto& scratch = w.scratch[omp_get_thread_num()];
 
     // Each pair (i, j > i in sorted order, at least one of them fluid) once: i's rates add the
@@ -381,12 +391,12 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
           const Vd t0 = load2(w.extra + extraSize * jj[0], w.extra + extraSize * jj[2]),
                    t1 = load2(w.extra + extraSize * jj[1], w.extra + extraSize * jj[3]);
           const Vd muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6),
-                   rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7), mOverRhoj = mj * rhoInvj;
+                   rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7);
           // r_ij, v_ij by component.
           const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
           const Vd ry = xi[1] - xj[1], vy = vi[1] - vj[1];
           const Vd rz = xi[2] - xj[2], vz = vi[2] - vj[2];
-          const Vd r2 = rx * rx + ry * ry + rz * rz, vr = vx * rx + vy * ry + vz * rz;
+          const Vd r2 = dot(rx, ry, rz, rx, ry, rz), vr = dot(vx, vy, vz, rx, ry, rz);
           const Vd hSum = hi + hj, hSum2 = hSum * hSum;  // 2 h_ij
           // The padding lanes get a harmless r (and add zero to i: their masses are zero).
           const Vd r2c = k + iota < count ? r2 : hSum2;
@@ -400,27 +410,31 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
           Vd pressureTerm = pri + prj;          // eq. (12)
           if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
             const Vd muij = vr * inv.b;
-            const Vd pi = (0.5 * beta) * hSum2 * inv.c * muij * muij;
+            const Vd pi = halfBeta * hSum2 * inv.c * muij * muij;
             pressureTerm += vr < 0.0 ? pi : Vd{};
           }
-          const Vd G = pressureTerm * F;  // dv_i/dt gets -m_j G r_ij, dv_j/dt gets +m_i G r_ij
+          const Vd G = pressureTerm * F;
           // eq. (9): m_j (mu_i + mu_j)/(rho_i rho_j) (r_ij . grad W)/(r_ij^2 + eta^2) v_ij, with
-          // r_ij . grad W = F r^2; i's share has m_j/rho_j and 1/rho_i, j's m_i/rho_i and 1/rho_j.
-          Vd Mi{}, Mj{};
-          if constexpr (MorrisViscosity) {
-            const Vd X = (mui + muj) * (F * r2c) * inv.b;
-            Mi = mOverRhoj * rhoInvi * X, Mj = mOverRhoi * rhoInvj * X;
-          }
-          accRho += mj * vDotGradW;                                // eq. (11)
-          if constexpr (VariableH) accH += mOverRhoj * vDotGradW;  // eq. (13)
-          const Vd cr = -mj * G;
-          accX += cr * rx + Mi * vx;
-          if constexpr (D > 1) accY += cr * ry + Mi * vy;
-          if constexpr (D > 2) accZ += cr * rz + Mi * vz;
+          // r_ij . grad W = F r^2, is m_j Y v_ij; so dv_i/dt gets -m_j Q and dv_j/dt +m_i Q with
+          // Q = G r_ij - Y v_ij.
+          Vd Y{};
+          if constexpr (MorrisViscosity) Y = (mui + muj) * (F * r2c) * inv.b * rhoInvj * rhoInvi;
+          auto Q = [&](Vd r, Vd v) {
+            if constexpr (MorrisViscosity)
+              return G * r - Y * v;
+            else
+              return G * r;
+          };
+          const Vd Qx = Q(rx, vx), Qy = Q(ry, vy), Qz = D > 2 ? Q(rz, vz) : Vd{};
+          const Vd mjVDotGradW = mj * vDotGradW;
+          accRho += mjVDotGradW;                                   // eq. (11)
+          if constexpr (VariableH) accH += mjVDotGradW * rhoInvj;  // eq. (13)
+          accX -= mj * Qx;
+          if constexpr (D > 1) accY -= mj * Qy;
+          if constexpr (D > 2) accZ -= mj * Qz;
           // j's share, lane by lane into its record (live lanes only: the padding's is dropped).
           Vd jRho = mi * vDotGradW, jH = VariableH ? mOverRhoi * vDotGradW : Vd{};
-          const Vd crj = mi * G;
-          Vd jX = crj * rx - Mj * vx, jY = D > 1 ? crj * ry - Mj * vy : Vd{};
+          Vd jX = mi * Qx, jY = D > 1 ? mi * Qy : Vd{};
           const int live = std::min(lanes, count - k);
           if constexpr (D <= 2) {
             transpose(jRho, jH, jX, jY);  // now one record {rho, h, x, y} per lane
@@ -431,7 +445,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
               __builtin_memcpy(rate, &updated, sizeof updated);
             }
           } else {
-            const Vd jZ = crj * rz - Mj * vz;
+            const Vd jZ = mi * Qz;
             for (int l = 0; l < live; ++l) {
               double* rate = w.rate + rateWidth * jj[l];
               rate[0] += jRho[l], rate[1] += jH[l], rate[2] += jX[l], rate[3] += jY[l];

@@ -49,10 +49,12 @@ struct QuadraticKernel {
   // (1/r) dW/dr for the pair loop, from r, 1/r and 1/h, which the loop computes once per pair
   // for all its terms. Valid for 0 < r < 2h only (the
   // loop masks the other pairs out) and branch-free so that the loop vectorises.
-  // (0.375 q - 0.75) / r = 0.375 / h - 0.75 / r.
+  // (0.375 q - 0.75) / r = 0.375 / h - 0.75 / r. Here and in the other kernels N_D is folded
+  // into the constants: a multiply fewer a pair.
   template <int D, class T>
   static T gradOverR(T /*r*/, T rInv, T hInv) {
-    return norm<D>() * ipow<D + 1>(hInv) * (0.375 * hInv - 0.75 * rInv);
+    constexpr double a = 0.375 * norm<D>(), b = 0.75 * norm<D>();
+    return ipow<D + 1>(hInv) * (a * hInv - b * rInv);
   }
 };
 
@@ -86,10 +88,11 @@ struct CubicSplineKernel {
   // Both branches are computed and one selected (a vector select when T is a vector).
   template <int D, class T>
   static T gradOverR(T r, T rInv, T hInv) {
+    constexpr double a = -3.0 * norm<D>(), b = 2.25 * norm<D>(), c = -0.75 * norm<D>();
     const T q = r * hInv, s = 2.0 - q;
-    const T inner = ipow<D + 2>(hInv) * (-3.0 + 2.25 * q);
-    const T outer = ipow<D + 1>(hInv) * (-0.75 * s * s) * rInv;
-    return norm<D>() * (q < 1.0 ? inner : outer);
+    const T inner = ipow<D + 2>(hInv) * (a + b * q);
+    const T outer = ipow<D + 1>(hInv) * (c * s * s) * rInv;
+    return q < 1.0 ? inner : outer;
   }
 };
 
@@ -125,8 +128,8 @@ struct WendlandC2Kernel {
   template <int D, class T>
   static T gradOverR(T r, T /*rInv*/, T hInv) {
     const T s = 1.0 - 0.5 * r * hInv;
-    if constexpr (D == 1) return norm<D>() * hInv * hInv * hInv * (-3.0 * s * s);
-    return norm<D>() * ipow<D + 2>(hInv) * (-5.0 * s * s * s);
+    if constexpr (D == 1) return hInv * hInv * hInv * ((-3.0 * norm<D>()) * s * s);
+    return ipow<D + 2>(hInv) * ((-5.0 * norm<D>()) * s * s * s);
   }
 };
 
