@@ -93,14 +93,16 @@ struct PairFlops {
   struct Term {
     int shared, sided;
   };
-  // h_ij 1, 1/h_ij 1, kernel 8, v_ij and v.r 5, v.gradW 1, p_i/rho_i^2 + p_j/rho_j^2 1, P F 1;
-  // each side: m v.gradW and add 2, -m P F 1, dv 2 x 2.
-  static constexpr Term base{18, 7};
+  // As the loop has done them since 5a4f6bc (the kernel's norm folded into its constants, the
+  // pressure and Morris forces as one vector Q per axis; the count was 38 + 2 x 15 before):
+  // h_ij 1, 1/h_ij 1, kernel 7, v_ij and v.r 5, v.gradW 1, p_i/rho_i^2 + p_j/rho_j^2 1, G = P F 1,
+  // Q = G r_ij 2; each side: m v.gradW and add 2, m Q and add 2 x 2.
+  static constexpr Term base{19, 6};
   static constexpr Term eta{4, 0};  // 1/(r^2 + 0.01 h_ij^2), shared by the two viscosities
   static constexpr Term artificialViscosity{11, 0};  // mu_ij 1, Pi 7, compare-select 2, add 1
-  static constexpr Term morrisViscosity{5,
-                                        6};  // (mu_i + mu_j) F r^2 / (r^2 + eta^2); m/rho/rho, dv
-  static constexpr Term variableH{0, 2};     // each side: m/rho v.gradW, add
+  // Y = (mu_i + mu_j) F r^2 / (r^2 + eta^2) / (rho_i rho_j) 7, Q -= Y v_ij 2 x 2.
+  static constexpr Term morrisViscosity{11, 0};
+  static constexpr Term variableH{0, 2};  // each side: m v.gradW / rho, add
   static Term sum(TermSwitches t) {
     Term s = base;
     auto add = [&](bool on, Term x) { s.shared += on ? x.shared : 0, s.sided += on ? x.sided : 0; };
