@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 
 #include "sph/Parallel.hpp"
 
@@ -188,6 +189,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
               typename ForceEvaluation<D>::Workspace& w, Derivatives<D>& out) {
   const std::size_t n = set.size();
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
+  if (nSorted + lanes >= std::int64_t{1} << 27)  // 16 j must fit the neighbour lists' int
+    throw std::length_error("ForceEvaluation: more than 2^27 interaction entries");
   double hMax = 0.0;
 #pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
   for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
@@ -360,7 +363,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
                           (anyFluid | fluidJ);
             const unsigned bits = laneBits(in);  // append the lanes inside, in order
             const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
-            __builtin_memcpy(nb + count, &packed, sizeof packed);
+            const Vi32 scaled = packed << 4;  // 16 j (pass 2)
+            __builtin_memcpy(nb + count, &scaled, sizeof scaled);
             count += __builtin_popcount(bits);
           }
         };
@@ -368,17 +372,28 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
         for (const auto& [b, e] : scratch.rows) test(b, e);
         work += (ownEnd - i - 1) + inRows + 3 * count;
         // Pad the last vector with the far-away, massless entry n: it adds zero to i.
-        const Vi32 padding = Vi32{} + static_cast<int>(nSorted);
+        const Vi32 padding = Vi32{} + static_cast<int>(16 * nSorted);
         __builtin_memcpy(nb + count, &padding, sizeof padding);
 
         // Pass 2: the terms, one vector of neighbours at a time.
         for (int k = 0; k < count; k += lanes) {
+          // The list holds 16 j for neighbour j (the byte offset of its {mu, 1/rho} record), so
+          // that each of j's records is at base + 1, 2 or 4 times that: an addressing mode, not a
+          // sign extension and a shift a neighbour and array (174 -> 149 instructions a vector,
+          // 1.5 % off the force evaluation at 1e4).
           const int* jj = nb + k;
-          auto gather = [&](const double* p) { return Vd{p[jj[0]], p[jj[1]], p[jj[2]], p[jj[3]]}; };
+          auto at = [&](double* base, std::size_t scale, int l) {
+            return reinterpret_cast<double*>(reinterpret_cast<char*>(base) +
+                                             scale * static_cast<std::uint32_t>(jj[l]));
+          };
+          auto gather = [&](const double* p) {
+            return Vd{p[jj[0] >> 4], p[jj[1] >> 4], p[jj[2] >> 4], p[jj[3] >> 4]};
+          };
           Vd xj[3], vj[3], hj, rhoj, prj, mj;  // the four neighbours' fields
           if constexpr (D <= 2) {
-            const double* r[4] = {w.record + recordSize * jj[0], w.record + recordSize * jj[1],
-                                  w.record + recordSize * jj[2], w.record + recordSize * jj[3]};
+            static_assert(recordSize * sizeof(double) == 4 * 16);
+            const double* r[4] = {at(w.record, 4, 0), at(w.record, 4, 1), at(w.record, 4, 2),
+                                  at(w.record, 4, 3)};
             xj[0] = load(r[0]), xj[1] = load(r[1]), vj[0] = load(r[2]), vj[1] = load(r[3]);
             transpose(xj[0], xj[1], vj[0], vj[1]);
             hj = load(r[0] + 4), rhoj = load(r[1] + 4), prj = load(r[2] + 4), mj = load(r[3] + 4);
@@ -388,8 +403,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
             for (int a = 0; a < 3; ++a) xj[a] = gather(xs[a]), vj[a] = gather(vs[a]);
             hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
           }
-          const Vd t0 = load2(w.extra + extraSize * jj[0], w.extra + extraSize * jj[2]),
-                   t1 = load2(w.extra + extraSize * jj[1], w.extra + extraSize * jj[3]);
+          static_assert(extraSize * sizeof(double) == 16);
+          const Vd t0 = load2(at(w.extra, 1, 0), at(w.extra, 1, 2)),
+                   t1 = load2(at(w.extra, 1, 1), at(w.extra, 1, 3));
           const Vd muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6),
                    rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7);
           // r_ij, v_ij by component.
@@ -440,14 +456,14 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
             transpose(jRho, jH, jX, jY);  // now one record {rho, h, x, y} per lane
             const Vd lane[4] = {jRho, jH, jX, jY};
             for (int l = 0; l < live; ++l) {
-              double* rate = w.rate + rateWidth * jj[l];
+              double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
               const Vd updated = load(rate) + lane[l];
               __builtin_memcpy(rate, &updated, sizeof updated);
             }
           } else {
             const Vd jZ = mi * Qz;
             for (int l = 0; l < live; ++l) {
-              double* rate = w.rate + rateWidth * jj[l];
+              double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
               rate[0] += jRho[l], rate[1] += jH[l], rate[2] += jX[l], rate[3] += jY[l];
               rate[4] += jZ[l];
             }
