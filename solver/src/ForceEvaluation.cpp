@@ -33,10 +33,11 @@ namespace sph {
 //   its pairs with fluid entries only.
 // * Pass 1 tests a block of `lanes` consecutive candidates at a time (one vector of doubles, GCC
 //   vector extensions) and appends the neighbours (inside the row, 0 < r_ij < support h_ij) to a
-//   per-thread list. Pass 2 evaluates the terms on that list, `lanes` neighbours at a time,
-//   padded with a far-away massless entry: i's rates add in registers (lane l into lane l, the
-//   lanes summed in a fixed order at the end), j's share goes straight to j's rate record. Pass
-//   2 has no branch: the approaching-pair test of eq. 10 is a select.
+//   per-thread list, as 16 j (the byte offset of j's 16-byte record; see pass 2). Pass 2 evaluates
+//   the terms on that list, `lanes` neighbours at a time, padded with a far-away massless entry:
+//   i's rates add in registers (lane l into lane l, the lanes summed in a fixed order at the end),
+//   j's share goes straight to j's rate record. Pass 2 has no branch: the approaching-pair test of
+//   eq. 10 is a select.
 // * Threads without atomics, and the same bits for any thread count: the sorted entries are cut
 //   into bands of two layers of cells (along the cell list's slowest axis). A pair's j lies
 //   in i's band or the next, so the even bands run at once, then the odd ones; within a band
@@ -431,8 +432,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
           }
           const Vd G = pressureTerm * F;
           // eq. (9): m_j (mu_i + mu_j)/(rho_i rho_j) (r_ij . grad W)/(r_ij^2 + eta^2) v_ij, with
-          // r_ij . grad W = F r^2, is m_j Y v_ij; so dv_i/dt gets -m_j Q and dv_j/dt +m_i Q with
-          // Q = G r_ij - Y v_ij.
+          // r_ij . grad W = F r^2, is m_j Y v_ij with Y as below. So dv_i/dt gets -m_j Q and
+          // dv_j/dt gets +m_i Q, with Q = G r_ij - Y v_ij (one vector per axis for both terms).
           Vd Y{};
           if constexpr (MorrisViscosity) Y = (mui + muj) * (F * r2c) * inv.b * rhoInvj * rhoInvi;
           auto Q = [&](Vd r, Vd v) {
