@@ -120,11 +120,16 @@ struct ForceEvaluation<D>::Workspace {
   // and the rates' record (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by axis).
   std::vector<double> recordStore, extraStore, rateStore;
   double *record = nullptr, *extra = nullptr, *rate = nullptr;  // 64-byte aligned
-  struct alignas(64) Scratch {  // one thread's: a cell's forward rows, a particle's neighbours
+  struct alignas(64) Scratch {  // one thread's: a cell's forward rows
     std::vector<std::array<int, 2>> rows;
-    std::vector<int> neighbours;
   };
   std::vector<Scratch> scratch;
+  // The neighbour lists of the last build (NeighbourLists): band b's particles' lists one after
+  // the other in bandLists[b], each padded to whole vectors; sorted entry k's starts at
+  // listBegin[k] and holds listCount[k] neighbours. `listed` entries were in that set.
+  std::vector<std::vector<int>> bandLists;
+  std::vector<int> listBegin, listCount;
+  std::size_t listed = 0;
   // The work of each band of two cell layers, in this evaluation (bandWork, written by the band's
   // thread) and in the last (bandCost), by which the threads' shares are cut: the candidates
   // pass 1 tests plus 3 per neighbour pass 2 takes (a dam break at dx 0.01, one thread: 1.9 ns
@@ -186,19 +191,27 @@ double* aligned(std::vector<double>& store, std::size_t n) {
 }
 
 template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool VariableH, int D>
-void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
+void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, NeighbourLists lists,
               typename ForceEvaluation<D>::Workspace& w, Derivatives<D>& out) {
   const std::size_t n = set.size();
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
   if (nSorted + lanes >= std::int64_t{1} << 27)  // 16 j must fit the neighbour lists' int
     throw std::length_error("ForceEvaluation: more than 2^27 interaction entries");
+  const bool reuse = lists.reuse;
+  if (reuse && w.listed != n)
+    throw std::logic_error("ForceEvaluation: neighbour lists reused for a set of another size");
   double hMax = 0.0;
 #pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
   for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
-  // Cells of half the largest reach, support h_max (h_ij <= h_max): neighbours within two cells.
-  // The grid may have 4 cells per point per halving, as many as the full-size cells would.
-  w.cells.build(
-      n, [&](std::size_t i, int a) { return set.x[i][a]; }, 0.5 * Kernel::support * hMax, 4 << D);
+  // Cells of half the largest reach, support h_max + skin (h_ij <= h_max): neighbours within two
+  // cells. The grid may have 4 cells per point per halving, as many as the full-size cells would.
+  // Reused lists keep the last build's cells and sorted order.
+  if (!reuse) {
+    w.cells.build(
+        n, [&](std::size_t i, int a) { return set.x[i][a]; },
+        0.5 * (Kernel::support * hMax + lists.skin), 4 << D);
+    w.listBegin.resize(n), w.listCount.resize(n), w.listed = n;
+  }
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
   for (int a = 0; a < D; ++a) w.x[a].resize(nPadded);
@@ -232,6 +245,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
   // so the even bands can run at the same time, then the odd ones.
   constexpr int reach = 2;
   const int nBands = (w.cells.layers() + reach - 1) / reach;
+  if (!reuse && static_cast<int>(w.bandLists.size()) < nBands) w.bandLists.resize(nBands);
 
   auto bandBegin = [&](int b) { return w.cells.layerBegin(reach * b); };
   // A band's cost: its work in the last evaluation where the bands were as many, else its entries
@@ -292,6 +306,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
                  *ms = w.m.data();
     const std::int64_t* receives = w.receives.data();
     constexpr double reachFactor2 = 0.25 * Kernel::support * Kernel::support;
+    // (support h_ij + skin)^2 - (support h_ij)^2 = skinSupport 2 h_ij + skin2: with skin = 0
+    // the very test of the pairs inside the support.
+    const double skinSupport = Kernel::support * lists.skin, skin2 = lists.skin * lists.skin;
     const Vi iota = {0, 1, 2, 3};
     static_assert(lanes == 4);
     // A local copy: through the reference, every store to a rate record could change beta, and
@@ -310,25 +327,14 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
     // pair's terms in registers, j's record gets the opposite share at once (eq. 11-13 are
     // symmetric in i, j up to the masses and the sign of grad W).
     // Returns the band's work (Workspace::bandWork).
-    auto band = [&](std::int64_t begin, std::int64_t end) {
+    auto band = [&](int bandIndex) {
+      const std::int64_t begin = bandBegin(bandIndex), end = bandBegin(bandIndex + 1);
+      std::vector<int>& list = w.bandLists[bandIndex];
+      std::size_t used = 0;      // the entries of `list` taken by the band's particles so far
       std::int64_t rowsOf = -1;  // the cell whose forward rows `scratch.rows` holds
       std::int64_t inRows = 0;   // the candidates in those rows
       std::int64_t work = 0;
       for (std::int64_t i = begin; i < end; ++i) {
-        const std::int64_t c = w.cells.sortedCell(static_cast<int>(i));
-        const int ownEnd = w.cells.template ownRowEnd<reach>(c);
-        if (c != rowsOf) {
-          scratch.rows.clear();
-          inRows = 0;
-          w.cells.template forEachForwardRow<reach>(c, [&](int b, int e) {
-            scratch.rows.push_back({b, e}), inRows += e - b;
-          });
-          const std::size_t candidates = ownEnd - w.cells.cellBegin(c) + inRows;
-          if (scratch.neighbours.size() < candidates + 2 * lanes)
-            scratch.neighbours.resize(2 * (candidates + 2 * lanes));
-          rowsOf = c;
-        }
-
         Vd xi[3], vi[3];
         double rhoi, pri, mi;
         for (int a = 0; a < 3; ++a) xi[a] = broadcast(a < D ? xs[a][i] : 0.0);
@@ -343,38 +349,61 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
         const double hi = hs[i];
         const double* ei = w.extra + extraSize * i;
         const double mui = ei[0], rhoInvi = ei[1], mOverRhoi = mi * rhoInvi;
-        const Vi anyFluid = Vi{} + receives[i];
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
 
-        // Pass 1: the forward neighbours (0 < r_ij < support h_ij, one of the two fluid), in
-        // sorted order: the own row first, then the shared rows.
-        int* nb = scratch.neighbours.data();
+        int* nb;
         int count = 0;
-        auto test = [&](std::int64_t rowBegin, std::int64_t rowEnd) {
-          for (std::int64_t j = rowBegin; j < rowEnd; j += lanes) {
-            const Vd rx = xi[0] - load(xs[0] + j);
-            const Vd ry = D > 1 ? xi[1] - load(xs[1] + j) : Vd{};
-            const Vd rz = D > 2 ? xi[2] - load(xs[2] + j) : Vd{};
-            const Vd r2 = rx * rx + ry * ry + rz * rz;
-            const Vd hSum = hi + load(hs + j);  // 2 h_ij
-            Vi fluidJ;
-            __builtin_memcpy(&fluidJ, receives + j, sizeof fluidJ);
-            // r2 > 0: a distinct particle at r = 0 adds nothing to any term.
-            const Vi in = (j + iota < rowEnd) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum) &
-                          (anyFluid | fluidJ);
-            const unsigned bits = laneBits(in);  // append the lanes inside, in order
-            const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
-            const Vi32 scaled = packed << 4;  // 16 j (pass 2)
-            __builtin_memcpy(nb + count, &scaled, sizeof scaled);
-            count += __builtin_popcount(bits);
+        if (reuse) {
+          nb = list.data() + w.listBegin[i], count = w.listCount[i];
+        } else {
+          const std::int64_t c = w.cells.sortedCell(static_cast<int>(i));
+          const int ownEnd = w.cells.template ownRowEnd<reach>(c);
+          if (c != rowsOf) {
+            scratch.rows.clear();
+            inRows = 0;
+            w.cells.template forEachForwardRow<reach>(c, [&](int b, int e) {
+              scratch.rows.push_back({b, e}), inRows += e - b;
+            });
+            rowsOf = c;
           }
-        };
-        test(i + 1, ownEnd);
-        for (const auto& [b, e] : scratch.rows) test(b, e);
-        work += (ownEnd - i - 1) + inRows + 3 * count;
-        // Pad the last vector with the far-away, massless entry n: it adds zero to i.
-        const Vi32 padding = Vi32{} + static_cast<int>(16 * nSorted);
-        __builtin_memcpy(nb + count, &padding, sizeof padding);
+          const std::size_t candidates = ownEnd - i - 1 + inRows;
+          if (list.size() < used + candidates + 2 * lanes)
+            list.resize(2 * (used + candidates + 2 * lanes));
+          nb = list.data() + used;
+          const Vi anyFluid = Vi{} + receives[i];
+
+          // Pass 1: the forward neighbours (0 < r_ij < support h_ij + skin, one of the two
+          // fluid), in sorted order: the own row first, then the shared rows.
+          auto test = [&](std::int64_t rowBegin, std::int64_t rowEnd) {
+            for (std::int64_t j = rowBegin; j < rowEnd; j += lanes) {
+              const Vd rx = xi[0] - load(xs[0] + j);
+              const Vd ry = D > 1 ? xi[1] - load(xs[1] + j) : Vd{};
+              const Vd rz = D > 2 ? xi[2] - load(xs[2] + j) : Vd{};
+              const Vd r2 = rx * rx + ry * ry + rz * rz;
+              const Vd hSum = hi + load(hs + j);  // 2 h_ij
+              Vi fluidJ;
+              __builtin_memcpy(&fluidJ, receives + j, sizeof fluidJ);
+              // r2 > 0: a distinct particle at r = 0 adds nothing to any term.
+              const Vi in = (j + iota < rowEnd) & (r2 > 0.0) &
+                            (r2 < reachFactor2 * hSum * hSum + (skinSupport * hSum + skin2)) &
+                            (anyFluid | fluidJ);
+              const unsigned bits = laneBits(in);  // append the lanes inside, in order
+              const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
+              const Vi32 scaled = packed << 4;  // 16 j (pass 2)
+              __builtin_memcpy(nb + count, &scaled, sizeof scaled);
+              count += __builtin_popcount(bits);
+            }
+          };
+          test(i + 1, ownEnd);
+          for (const auto& [b, e] : scratch.rows) test(b, e);
+          work += (ownEnd - i - 1) + inRows;
+          // Pad the last vector with the far-away, massless entry n: it adds zero to i.
+          const Vi32 padding = Vi32{} + static_cast<int>(16 * nSorted);
+          __builtin_memcpy(nb + count, &padding, sizeof padding);
+          w.listBegin[i] = static_cast<int>(used), w.listCount[i] = count;
+          used += (count + lanes - 1) / lanes * lanes;
+        }
+        work += 3 * count;
 
         // Pass 2: the terms, one vector of neighbours at a time.
         for (int k = 0; k < count; k += lanes) {
@@ -415,14 +444,17 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
           const Vd rz = xi[2] - xj[2], vz = vi[2] - vj[2];
           const Vd r2 = dot(rx, ry, rz, rx, ry, rz), vr = dot(vx, vy, vz, rx, ry, rz);
           const Vd hSum = hi + hj, hSum2 = hSum * hSum;  // 2 h_ij
-          // The padding lanes get a harmless r (and add zero to i: their masses are zero).
-          const Vd r2c = k + iota < count ? r2 : hSum2;
+          // Inside the support (a listed pair may be beyond it, within the skin) and not a padding
+          // lane. The others get a harmless r and F = 0: they add zero to i and j.
+          const Vi inside = (k + iota < count) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum);
+          const Vd r2c = inside ? r2 : hSum2;
           // Anti-crossing eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h_ij^2 = hSum^2 / 4.
           const Vd rEta2 = r2c + 0.0025 * hSum2;
           const Vd rhoSum = ArtificialViscosity ? rhoi + rhoj : broadcast(1.0);
           const auto inv = pairInverses(r2c, hSum, rEta2, rhoSum);
-          const Vd r = inv.r, hInv = 2.0 * inv.a;                         // 1 / h_ij
-          const Vd F = Kernel::template gradOverR<D>(r, inv.rInv, hInv);  // grad_i W_ij = F r_ij
+          const Vd r = inv.r, hInv = 2.0 * inv.a;                                 // 1 / h_ij
+          const Vd F = inside ? Kernel::template gradOverR<D>(r, inv.rInv, hInv)  // grad_i W_ij =
+                              : Vd{};                                             // F r_ij
           const Vd vDotGradW = vr * F;          // v_ij . grad_i W_ij = v_ji . grad_j W_ji
           Vd pressureTerm = pri + prj;          // eq. (12)
           if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
@@ -485,8 +517,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
     // Even bands, then (after the barrier) odd ones: no two bands at work at once share a record.
 #pragma omp barrier
     for (int q = 0; q < 2; ++q) {
-      for (int b = first[q]; b <= last[q]; b += 2)
-        w.bandWork[b] = band(bandBegin(b), bandBegin(b + 1));
+      for (int b = first[q]; b <= last[q]; b += 2) w.bandWork[b] = band(b);
 #pragma omp barrier
     }
 
@@ -506,7 +537,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g,
 template <int D, class Kernel>
 auto chooseLoop(TermSwitches t) {
   using W = typename ForceEvaluation<D>::Workspace;
-  using Fn = void (*)(const InteractionSet<D>&, double, const Vec<D>&, W&, Derivatives<D>&);
+  using Fn = void (*)(const InteractionSet<D>&, double, const Vec<D>&, NeighbourLists, W&,
+                      Derivatives<D>&);
   constexpr Fn table[8] = {
       &pairLoop<Kernel, false, false, false, D>, &pairLoop<Kernel, true, false, false, D>,
       &pairLoop<Kernel, false, true, false, D>,  &pairLoop<Kernel, true, true, false, D>,
@@ -525,8 +557,8 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms, doubl
 
 template <int D>
 void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>& out,
-                                    const Vec<D>& g) {
-  loop_(set, beta_, g, *work_, out);
+                                    const Vec<D>& g, NeighbourLists lists) {
+  loop_(set, beta_, g, lists, *work_, out);
 }
 
 template <int D>

@@ -2,6 +2,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "sph/EquationOfState.hpp"
 #include "sph/Parallel.hpp"
 
@@ -10,10 +13,12 @@ namespace sph {
 template <int D>
 void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
                          const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
-                         InteractionSet<D>& set) {
+                         InteractionSet<D>& set, HaloMembers members) {
   const std::size_t n = fluid.size();
   const std::int64_t count = static_cast<std::int64_t>(n);
-  set.resize(n);  // the fluid entries; the halo is appended below
+  const bool same = members == HaloMembers::same;
+  if (same && set.nFluid != n) throw std::logic_error("buildInteractionSet: the fluid changed");
+  if (!same) set.resize(n);  // the fluid entries; the halo is appended below
   set.nFluid = n;
   // One team for the fluid copy and every axis's halo (a team costs 0.6 us or more to
   // gather on the 2-core machine; the whole set about 10 us at 1,700 entries on one thread). Each
@@ -51,33 +56,51 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
       const bool lower = bounds.face[a][0] != FaceKind::open;
       const bool upper = bounds.face[a][1] != FaceKind::open;
-      // Axis 0 scans the fluid, each thread the share it copied: no barrier before it.
-      if (a > 0) {
+      // Axis 0 scans the fluid, each thread the share it copied: no barrier before it (but
+      // with the last build's codes a thread's images may come from another's share).
+      if (a > 0 || same) {
 #pragma omp barrier
       }
-      const std::int64_t scanned = static_cast<std::int64_t>(a == 0 ? n : set.size());
-      mine.clear();
-      const Vec<D>* x = set.x.data();
-      for (std::int64_t k = scanned * t / nt; k < scanned * (t + 1) / nt; ++k) {
-        const double xa = x[k][a];
-        if (lower && xa - lo < reach) mine.push_back(2 * k);
-        if (upper && hi - xa < reach) mine.push_back(2 * k + 1);
-      }
+      // The entries before this axis's images: the fluid and the earlier axes' halo.
+      std::size_t scanned = n;
+      for (int b = 0; b < a; ++b) scanned += set.halo[b].size();
+      // Codes 2 k + side: entry k's image across the lower (0) or upper (1) face of axis a.
+      std::vector<std::int64_t>& codes = set.halo[a];
+      const std::int64_t* first;  // this thread's codes, and its first image
+      std::size_t g, many;
+      if (same) {  // the last build's codes, an equal share a thread
+        const std::size_t all = codes.size();
+        first = codes.data() + all * t / nt, many = all * (t + 1) / nt - all * t / nt;
+        g = scanned + all * t / nt;
+      } else {
+        mine.clear();
+        const Vec<D>* x = set.x.data();
+        const std::int64_t all = static_cast<std::int64_t>(scanned);
+        for (std::int64_t k = all * t / nt; k < all * (t + 1) / nt; ++k) {
+          const double xa = x[k][a];
+          if (lower && xa - lo < reach) mine.push_back(2 * k);
+          if (upper && hi - xa < reach) mine.push_back(2 * k + 1);
+        }
 #pragma omp barrier
 #pragma omp single
-      {
-        std::size_t total = static_cast<std::size_t>(scanned);
-        for (int u = 0; u < nt; ++u) total += set.nearFace[u].entries.size();
-        set.resize(total);
+        {
+          std::size_t total = scanned;
+          for (int u = 0; u < nt; ++u) total += set.nearFace[u].entries.size();
+          set.resize(total);
+          codes.resize(total - scanned);
+        }
+        g = scanned;
+        for (int u = 0; u < t; ++u) g += set.nearFace[u].entries.size();
+        std::copy(mine.begin(), mine.end(), codes.begin() + (g - scanned));
+        first = mine.data(), many = mine.size();
       }
-      std::size_t g = static_cast<std::size_t>(scanned);  // this thread's first image
-      for (int u = 0; u < t; ++u) g += set.nearFace[u].entries.size();
       Vec<D>* X = set.x.data();
       Vec<D>* V = set.v.data();
       double *rho = set.rho.data(), *p = set.p.data(), *m = set.m.data(), *h = set.h.data(),
              *mu = set.mu.data();
       int* source = set.source.data();
-      for (const std::int64_t code : mine) {
+      for (std::size_t c = 0; c < many; ++c) {
+        const std::int64_t code = first[c];
         const std::size_t k = static_cast<std::size_t>(code / 2);
         const int side = static_cast<int>(code % 2);
         const FaceKind kind = bounds.face[a][side];
@@ -108,12 +131,12 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
 
 template void buildInteractionSet<1>(const Particles<1>&, const std::vector<Phase>&,
                                      const Boundaries<1>&, double, const Vec<1>&,
-                                     InteractionSet<1>&);
+                                     InteractionSet<1>&, HaloMembers);
 template void buildInteractionSet<2>(const Particles<2>&, const std::vector<Phase>&,
                                      const Boundaries<2>&, double, const Vec<2>&,
-                                     InteractionSet<2>&);
+                                     InteractionSet<2>&, HaloMembers);
 template void buildInteractionSet<3>(const Particles<3>&, const std::vector<Phase>&,
                                      const Boundaries<3>&, double, const Vec<3>&,
-                                     InteractionSet<3>&);
+                                     InteractionSet<3>&, HaloMembers);
 
 }  // namespace sph

@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -196,6 +197,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("particles", std::int64_t(sim.particles().size()), m);
   file.attribute("end_time", sim.time(), m);
   file.attribute("force_evaluations", std::int64_t(sim.forceEvaluations()), m);
+  file.attribute("kept_neighbour_lists", std::int64_t(sim.reusedNeighbourLists()), m);
   file.attribute("steps_on_all_threads", onAll, m);  // the rest on one (ThreadTuner)
   file.attribute("wall_reflections", std::int64_t(sim.wallReflections()), m);
   file.attribute("particle_evaluations_per_s",
@@ -213,6 +215,9 @@ int run(const Scene& scene, const RunOptions& opt) {
     for (std::size_t k = 0; k < scene.phases.size(); ++k)
       std::printf("   %s %.4f %%", scene.phases[k].name.c_str(), 100 * series.maxVariation[k + 1]);
     std::printf("\n  wall reflections %ld\n", sim.wallReflections());
+    std::printf("  force evaluations %ld, %.0f %% with the neighbour lists kept\n",
+                sim.forceEvaluations(),
+                100.0 * sim.reusedNeighbourLists() / std::max(1L, sim.forceEvaluations()));
     if (maxThreads > 1)
       std::printf("  steps on %d threads %.0f %%, on one %.0f %%%s\n", maxThreads, 100 * onAll,
                   100 * (1 - onAll), opt.fixedThreads ? " (--fixed-threads)" : "");

@@ -356,6 +356,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
     numerics.fail("density_band", "expected [low, high] with 0 < low < 1 < high (rho/rho0)");
   s.densityBand = {band[0], band[1]};
   s.dtFloor = numerics.nonNegative("dt_floor", 0.0);
+  s.neighbourSkin = numerics.nonNegative("neighbour_skin", 0.1);
   numerics.rejectUnknown();
   for (int a = 0; a < D; ++a)
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");

@@ -50,7 +50,8 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
     : scene_(scene),
       bounds_(boundariesOf<D>(scene)),
       forces_(scene.kernel, scene.terms, scene.beta),
-      y_(std::move(initial)) {
+      y_(std::move(initial)),
+      skinFraction_(scene.neighbourSkin) {
   id_.resize(y_.size());
   std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)
@@ -73,17 +74,37 @@ std::vector<std::string> Simulation<D>::termNames() const {
 template <int D>
 void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& out) {
   const std::int64_t n = static_cast<std::int64_t>(state.size());
-  double hMax = 0;
-#pragma omp parallel for if (n >= parallelFrom()) reduction(max : hMax)
-  for (std::int64_t i = 0; i < n; ++i) hMax = std::max(hMax, state.h[i]);
+  // The lists of the last build serve while no particle has moved, and no h grown, enough to
+  // bring a pair that was not listed inside the support (2 d + 2 dh below the skin:
+  // ForceEvaluation.hpp). A custom halo may change its members at any evaluation: lists are then
+  // built every time.
+  const bool skinned = skinFraction_ > 0 && !halo_;
+  const bool kept = skinned && static_cast<std::int64_t>(listedAt_.size()) == n;
+  double hMax = 0, moved2 = 0, grown = 0;
+#pragma omp parallel for if (n >= parallelFrom()) reduction(max : hMax, moved2, grown)
+  for (std::int64_t i = 0; i < n; ++i) {
+    hMax = std::max(hMax, state.h[i]);
+    if (kept) {
+      moved2 = std::max(moved2, (state.r[i] - listedAt_[i]).squaredNorm());
+      grown = std::max(grown, state.h[i] - listedH_[i]);
+    }
+  }
+  const bool reuse = kept && 2.0 * std::sqrt(moved2) + 2.0 * grown < skin_;
+  if (!reuse && skinned) {
+    skin_ = skinFraction_ * 2.0 * hMax;
+    listedAt_ = state.r, listedH_ = state.h;
+  }
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
   const Vec<D> ghostGravity = scene_.hydrostaticGhosts ? g : Vec<D>::Zero();
-  buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax, ghostGravity, set_);
+  // Ghosts within the support plus the skin: those the kept lists may need.
+  buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax + skin_, ghostGravity, set_,
+                      reuse ? HaloMembers::same : HaloMembers::rescan);
   if (halo_) halo_(state, set_);
-  forces_(set_, out, g);  // with F/rho of eq. (12)
+  forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
+  if (reuse) ++reusedLists_;
 }
 
 template <int D>
@@ -324,6 +345,7 @@ void Simulation<D>::storeInCellOrder() {
   }
   std::swap(y_, to);
   std::swap(id_, idScratch_);
+  listedAt_.clear();  // the lists were of the old order
 }
 
 template class Simulation<1>;

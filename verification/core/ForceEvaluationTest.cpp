@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -113,14 +114,11 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
   return ref;
 }
 
-// Largest |code - reference| / (sum of |pair contributions|) over particles and fields.
+// Largest |out - reference| / (sum of |pair contributions|) over particles and fields.
 template <int D>
-double compare(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t) {
-  const double beta = 1.0;
-  const Reference<D> ref = reference<D>(s, kind, t, beta);
-  sph::ForceEvaluation<D> forces(kind, t, beta);
-  sph::Derivatives<D> out;
-  forces(s, out);
+double error(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t,
+             const sph::Derivatives<D>& out) {
+  const Reference<D> ref = reference<D>(s, kind, t, 1.0);
   EXPECT_EQ(out.dvdt.size(), s.nFluid);
   double worst = 0.0;
   auto relative = [](double diff, double scale) { return scale > 0 ? diff / scale : diff; };
@@ -134,6 +132,14 @@ double compare(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitch
       EXPECT_EQ(out.dhdt[i], 0.0);
   }
   return worst;
+}
+
+template <int D>
+double compare(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t) {
+  sph::ForceEvaluation<D> forces(kind, t, 1.0);
+  sph::Derivatives<D> out;
+  forces(s, out);
+  return error<D>(s, kind, t, out);
 }
 
 // Tolerance: the two loops add the same pair terms in a different order (cell order against
@@ -171,6 +177,70 @@ TEST(ForceEvaluation, MatchesReferenceLoop2D) {
 }
 TEST(ForceEvaluation, MatchesReferenceLoop3D) {
   allCombinations<3>(12);
+}
+
+// The set with every entry moved by `d` in a random direction and its h changed by up to +-dh.
+template <int D>
+sph::InteractionSet<D> moved(sph::InteractionSet<D> s, double d, double dh, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> n(0.0, 1.0);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    sph::Vec<D> dir;
+    for (int a = 0; a < D; ++a) dir[a] = n(rng);
+    s.x[k] += d / dir.norm() * dir;
+    s.h[k] += dh * u(rng);
+  }
+  return s;
+}
+
+// Neighbour lists kept between evaluations (ForceEvaluation.hpp, Verlet 1967): built with a skin
+// on one set, then reused on the same entries each moved by d and grown in h by at most dh. With
+// 2 d + 2 dh = 0.9 skin every pair inside the support is still listed, and the listed pairs beyond
+// it must add exactly nothing: the rates of the moved set match the O(N^2) reference to the same
+// 1e-12. The build itself, with its skin, is compared too. A second part moves the entries by two
+// skins: the kept lists then miss pairs and the error must be large, so that the first part can
+// fail (1e-3: a missed pair is a whole term of the sum, not round-off).
+template <int D>
+void keptLists(unsigned seed) {
+  const auto set = randomSet<D>(seed);
+  double hMax = 0;
+  for (double h : set.h) hMax = std::max(hMax, h);
+  const double skin = 0.1 * 2.0 * hMax;  // the scenes' default fraction of the support
+  const auto near = moved<D>(set, 0.2 * skin, 0.25 * skin, seed + 1);  // 2 d + 2 dh = 0.9 skin
+  const auto far = moved<D>(set, 2.0 * skin, 0.0, seed + 2);
+  sph::verification::Results results;
+  for (KernelKind kind : kinds) {
+    double worst = 0.0, worstFar = 1e300;
+    for (int combo = 0; combo < 8; ++combo) {
+      sph::TermSwitches t{(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0};
+      sph::ForceEvaluation<D> forces(kind, t, 1.0);
+      sph::Derivatives<D> out;
+      forces(set, out, sph::Vec<D>::Zero(), {skin, false});
+      worst = std::max(worst, error<D>(set, kind, t, out));
+      forces(near, out, sph::Vec<D>::Zero(), {skin, true});
+      worst = std::max(worst, error<D>(near, kind, t, out));
+      forces(set, out, sph::Vec<D>::Zero(), {skin, false});
+      forces(far, out, sph::Vec<D>::Zero(), {skin, true});
+      worstFar = std::min(worstFar, error<D>(far, kind, t, out));
+    }
+    const std::string what = std::string(sph::name(kind)) + ", D=" + std::to_string(D);
+    EXPECT_LE(worst, tolerance) << what;
+    EXPECT_GE(worstFar, 1e-3) << what;
+    results.check("kept neighbour lists, moved within the skin: max error / sum|pair terms|, " +
+                      what + ", all 8 term combinations",
+                  worst, "<=", tolerance, "summation round-off bound, as the full build");
+  }
+}
+
+TEST(ForceEvaluation, KeptNeighbourListsMatchReference1D) {
+  keptLists<1>(20);
+}
+TEST(ForceEvaluation, KeptNeighbourListsMatchReference2D) {
+  keptLists<2>(21);
+}
+TEST(ForceEvaluation, KeptNeighbourListsMatchReference3D) {
+  keptLists<3>(22);
 }
 
 // The pair loop visits each pair once, in bands of cell layers that run in a fixed order of two

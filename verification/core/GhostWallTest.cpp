@@ -1,9 +1,11 @@
 // Issue 2, part 5: ghost-particle walls (buildInteractionSet; Libersky et al. 1993, Colagrossi &
 // Landrini 2003; DESIGN.md section 1, "Walls").
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "Results.hpp"
@@ -219,6 +221,53 @@ TEST(GhostWalls, KernelSumNextToWallEqualsInterior) {
                               "exact lattice mirror; summation round-off"));
     EXPECT_LE(kernelSumDeviation<3>(kind), 1e-12) << sph::name(kind);
   }
+}
+
+// HaloMembers::same (for kept neighbour lists) recomputes the last build's images from the moved
+// fluid: while no particle crosses a reach line it must give the very set a rescan gives, bit for
+// bit, on one thread and on two. A lattice of 120 x 80 (above parallelFrom()) fills a box periodic
+// in x, walled in y (free slip below, a moving no-slip lid above); rows lie 2.5 and 3.5 dx from
+// the faces, the reach is 2.66 dx, and each particle moves by at most 0.1 dx a component.
+TEST(GhostWalls, SameMembersGiveTheRescannedSet) {
+  const int nx = 120, ny = 80;
+  const double dx = 1.0 / nx, reach = 2.66 * dx;
+  sph::Boundaries<2> b;
+  b.lower = {0.0, 0.0}, b.upper = {1.0, ny * dx};
+  b.face[0] = {FaceKind::periodic, FaceKind::periodic};
+  b.face[1] = {FaceKind::free_slip, FaceKind::no_slip};
+  b.wallVelocity[1][1] = {0.3, 0.0};
+  sph::Particles<2> a;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      a.r.push_back({(i + 0.5) * dx, (j + 0.5) * dx}), a.v.push_back({0.1 * i, -0.05 * j});
+      a.rho.push_back(1000.0 + 0.01 * j), a.m.push_back(0.01), a.h.push_back(1.33 * dx);
+      a.phase.push_back(0), a.p.push_back(0.0);
+    }
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-0.1 * dx, 0.1 * dx);
+  sph::Particles<2> moved = a;
+  for (std::size_t k = 0; k < moved.size(); ++k) {
+    moved.r[k] += sph::Vec<2>(u(rng), u(rng)), moved.v[k] *= 1.5, moved.rho[k] += 2.0;
+  }
+  const sph::Vec<2> g(0.0, -9.81);
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    sph::InteractionSet<2> kept, rescanned;
+    sph::buildInteractionSet<2>(a, water, b, reach, g, kept);
+    sph::buildInteractionSet<2>(moved, water, b, 0.0, g, kept, sph::HaloMembers::same);
+    sph::buildInteractionSet<2>(moved, water, b, reach, g, rescanned);
+    ASSERT_EQ(kept.size(), rescanned.size()) << threads << " threads";
+    EXPECT_GT(kept.size(), moved.size() + 2 * nx) << "images of the lowest rows and lid, at least";
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      ASSERT_EQ(kept.x[k], rescanned.x[k]) << threads << " threads, entry " << k;
+      ASSERT_EQ(kept.v[k], rescanned.v[k]) << threads << " threads, entry " << k;
+      ASSERT_EQ(kept.p[k], rescanned.p[k]) << threads << " threads, entry " << k;
+      ASSERT_EQ(kept.rho[k], rescanned.rho[k]) << threads << " threads, entry " << k;
+      ASSERT_EQ(kept.source[k], rescanned.source[k]) << threads << " threads, entry " << k;
+    }
+  }
+  omp_set_num_threads(saved);
 }
 
 }  // namespace

@@ -26,6 +26,15 @@ struct Derivatives {
   void resize(std::size_t n) { dvdt.resize(n), drhodt.resize(n), dhdt.resize(n); }
 };
 
+// Pass 1's neighbour lists (Verlet 1967): built with a skin (every pair within the kernel's
+// support plus `skin` [m]), or the last build's reused. Reuse needs the same entries, each moved
+// by at most d and grown in h by at most dh since that build, with 2 d + 2 dh <= skin (the
+// support is 2 h; Simulation::rates checks it). Pairs beyond the support add nothing either way.
+struct NeighbourLists {
+  double skin = 0.0;
+  bool reuse = false;
+};
+
 template <int D>
 class ForceEvaluation {
  public:
@@ -36,7 +45,7 @@ class ForceEvaluation {
   // 12; no pass of its own). Each pair is evaluated once and every sum runs in an order that the
   // cell list fixes, so the result does not depend on the number of threads.
   void operator()(const InteractionSet<D>& set, Derivatives<D>& out,
-                  const Vec<D>& g = Vec<D>::Zero());
+                  const Vec<D>& g = Vec<D>::Zero(), NeighbourLists lists = {});
 
   // The entries below `count` of the last evaluated set (its fluid), in the cell list's order.
   void cellOrder(std::size_t count, std::vector<int>& out) const;
@@ -49,8 +58,8 @@ class ForceEvaluation {
                      // step)
 
  private:
-  using Loop = void (*)(const InteractionSet<D>&, double beta, const Vec<D>& g, Workspace&,
-                        Derivatives<D>&);
+  using Loop = void (*)(const InteractionSet<D>&, double beta, const Vec<D>& g, NeighbourLists,
+                        Workspace&, Derivatives<D>&);
   KernelKind kernel_;
   TermSwitches terms_;
   double beta_;

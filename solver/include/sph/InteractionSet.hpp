@@ -2,6 +2,7 @@
 // Everything a fluid particle interacts with: the fluid particles themselves (first nFluid
 // entries), then their periodic images and ghost-wall mirrors (the halo). Rebuilt before every
 // force evaluation from the current fluid state.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -25,6 +26,9 @@ struct InteractionSet {
     std::vector<std::int64_t> entries;
   };
   std::vector<NearFace> nearFace;
+  // The halo's members by axis: 2 k + side for entry k's image across that axis's lower (0) or
+  // upper (1) face, in the order the images follow the fluid.
+  std::array<std::vector<std::int64_t>, D> halo;
 
   std::size_t size() const { return x.size(); }
   void clear() { resize(0); }
@@ -44,9 +48,13 @@ struct InteractionSet {
 // gives the ghost the hydrostatic correction p_g = p + rho g . (x_g - x), which supplies the
 // rho g that a mirrored, even pressure field lacks at the wall (without it a particle at a free
 // surface next to the wall, where p ~ 0, is held up by nothing but artificial viscosity).
+// HaloMembers::same keeps the last build's halo members (the same entries, their state
+// recomputed; `reach` unused) for a pair loop that reuses its neighbour lists: the fluid must be
+// as many particles as then, and a member's image is then in the same place of the set.
+enum class HaloMembers { rescan, same };
 template <int D>
 void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
                          const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
-                         InteractionSet<D>& set);
+                         InteractionSet<D>& set, HaloMembers members = HaloMembers::rescan);
 
 }  // namespace sph

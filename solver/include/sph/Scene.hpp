@@ -20,8 +20,8 @@ struct SceneError : std::runtime_error {
 
 struct FluidBlock {
   enum class Shape { rectangle, circle } shape = Shape::rectangle;
-  std::vector<double> lower, upper;   // rectangle
-  std::vector<double> center;         // circle (a disc in 2-D, a ball in 3-D)
+  std::vector<double> lower, upper;  // rectangle
+  std::vector<double> center;        // circle (a disc in 2-D, a ball in 3-D)
   double radius = 0.0;
   int phase = 0;
   std::vector<double> velocity;
@@ -36,7 +36,7 @@ struct FluidBlock {
   // which needs G G symmetric; Q_max is Q's largest value over the block (circle:
   // R^2 max(0, lambda_max(G G)); rectangle: over its corners and centre), so p = p0 there.
   bool stretching = false;
-  double surface = 0.0;      // free-surface height for the hydrostatic start (default: block top)
+  double surface = 0.0;  // free-surface height for the hydrostatic start (default: block top)
   // Where the particles start: on the Cartesian lattice, or packed (Colagrossi et al. 2012,
   // eq. 2.16, 2-D only) inside the block closed by fixed solid layers along its whole boundary,
   // with the scene's kernel and h/dx; then m = rho V0, V0 = block area / N.
@@ -47,9 +47,9 @@ struct FluidBlock {
 };
 
 struct Probe {
-  std::string name, type;  // surge_front, column_height, pressure, water_level
+  std::string name, type;        // surge_front, column_height, pressure, water_level
   std::vector<double> position;  // pressure: the point
-  double x = 0.0;                // water_level: gauge position; column_height: band 0..x from the lower wall
+  double x = 0.0;  // water_level: gauge position; column_height: band 0..x from the lower wall
   // For the report (reports/README.md): reference data keys and the scales of their nondimensional
   // form, written as attributes of /series/probe_<name>. Zero or empty: not given.
   std::string reference;
@@ -62,7 +62,8 @@ struct Scene {
   std::vector<double> lower, upper;
   std::array<std::array<FaceKind, 2>, 3> faces{};
   std::array<std::array<std::vector<double>, 2>, 3> wallVelocity{};
-  bool hydrostaticGhosts = false;  // ghost pressure: the source's (paper) or hydrostatically corrected
+  bool hydrostaticGhosts =
+      false;  // ghost pressure: the source's (paper) or hydrostatically corrected
   std::vector<Phase> phases;
   std::vector<FluidBlock> fluids;
   std::vector<double> bodyAcceleration;  // gravity plus any driving force, F/rho [m/s^2]
@@ -73,9 +74,10 @@ struct Scene {
   double cflAcoustic = 0.25, cflViscous = 0.125, cflForce = 0.25;  // Morris et al. 1997
   double endTime = 0.0;
   std::array<double, 2> densityBand{0.8, 1.2};  // a run fails when rho/rho0 leaves this band
-  double dtFloor = 0.0;                          // a run fails when dt falls below (0: 1e-4 of the first dt)
-  double snapshotInterval = 0.0;                 // 0: first and last only
-  int seriesEvery = 1;                           // record the time series every n steps
+  double neighbourSkin = 0.1;     // neighbour lists' skin, a fraction of the support (Simulation)
+  double dtFloor = 0.0;           // a run fails when dt falls below (0: 1e-4 of the first dt)
+  double snapshotInterval = 0.0;  // 0: first and last only
+  int seriesEvery = 1;            // record the time series every n steps
   std::vector<Probe> probes;
   std::vector<std::string> warnings;
 

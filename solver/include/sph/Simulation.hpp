@@ -54,6 +54,10 @@ class Simulation {
   // between steps; ids() gives each stored particle's index at the start, by which failures
   // name a particle.
   void keepCellOrder(int steps) { cellOrderEvery_ = steps; }
+  // Neighbour lists with a skin of `fraction` of the support (2 h_max), kept while the particles
+  // have not moved enough to need new ones (Verlet 1967; ForceEvaluation.hpp); 0 builds them at
+  // every evaluation. The scene's numerics.neighbour_skin sets it.
+  void keepNeighbourLists(double fraction) { skinFraction_ = fraction, listedAt_.clear(); }
   const std::vector<int>& ids() const { return id_; }
 
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
@@ -75,6 +79,7 @@ class Simulation {
   double lastDt() const { return dt_; }
   TimeStepLimit lastLimit() const { return limit_; }
   long forceEvaluations() const { return evaluations_; }
+  long reusedNeighbourLists() const { return reusedLists_; }  // evaluations that kept them
   // Particles that ended a step less than dx/2 beyond a wall and were reflected back (position
   // mirrored, normal velocity reversed). The mirror ghosts of the paper give a finite, not a
   // growing, repulsion as a particle nears its own ghost, so a thin free-surface layer on a wall
@@ -105,13 +110,16 @@ class Simulation {
   Check check_;
   Reflection reflection_;
   Particles<D> y_, yStar_;
+  double skinFraction_ = 0.0, skin_ = 0.0;
   Derivatives<D> f_, fStar_;
   InteractionSet<D> set_;
   std::vector<int> id_, order_, idScratch_;
   int cellOrderEvery_ = 0;
   double t_ = 0.0, dt_ = 0.0, dtFloor_ = 0.0;
   TimeStepLimit limit_ = TimeStepLimit::acoustic;
-  long step_ = 0, evaluations_ = 0, reflections_ = 0;
+  long step_ = 0, evaluations_ = 0, reflections_ = 0, reusedLists_ = 0;
+  std::vector<Vec<D>> listedAt_;  // the positions and h at the lists' build
+  std::vector<double> listedH_;
   double reflectionDepth_ = 0.0;
   bool ratesValid_ = false;
 };
