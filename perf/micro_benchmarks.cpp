@@ -96,6 +96,25 @@ BENCHMARK(BM_ForceEvaluation)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
+// The same with the neighbour lists of a build with the scenes' default skin (0.1 of the support)
+// reused, as most of a run's evaluations are (Simulation::keepNeighbourLists).
+void BM_ForceEvaluationKeptLists(benchmark::State& state) {
+  Block2D& b = block(static_cast<std::size_t>(state.range(0)));
+  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, {true, true, true}, 1.0);
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  const sph::NeighbourLists build{0.1 * 2.0 * b.hMax, false}, kept{build.skin, true};
+  force(b.set, b.out, sph::Vec<2>::Zero(), build);
+  for (auto _ : state) {
+    force(b.set, b.out, sph::Vec<2>::Zero(), kept);
+    benchmark::DoNotOptimize(b.out.drhodt.data());
+  }
+  setCounters(state, b.set.nFluid);
+}
+BENCHMARK(BM_ForceEvaluationKeptLists)
+    ->ArgsProduct({{1000, 10000, 100000, 1000000}, {1, 2}})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
 }  // namespace
 
 // Google Benchmark's main, with the core-to-core round trip at the start in the output's context

@@ -120,8 +120,9 @@ struct ForceEvaluation<D>::Workspace {
   // and the rates' record (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by axis).
   std::vector<double> recordStore, extraStore, rateStore;
   double *record = nullptr, *extra = nullptr, *rate = nullptr;  // 64-byte aligned
-  struct alignas(64) Scratch {  // one thread's: a cell's forward rows
+  struct alignas(64) Scratch {  // one thread's: a cell's forward rows, a particle's neighbours
     std::vector<std::array<int, 2>> rows;
+    std::vector<int> neighbours;
   };
   std::vector<Scratch> scratch;
   // The neighbour lists of the last build (NeighbourLists): band b's particles' lists one after
@@ -197,9 +198,10 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
   if (nSorted + lanes >= std::int64_t{1} << 27)  // 16 j must fit the neighbour lists' int
     throw std::length_error("ForceEvaluation: more than 2^27 interaction entries");
-  const bool reuse = lists.reuse;
-  if (reuse && w.listed != n)
-    throw std::logic_error("ForceEvaluation: neighbour lists reused for a set of another size");
+  const bool reuse = lists.reuse, skinned = lists.skin > 0;
+  if (reuse && (w.listed != n || !skinned))
+    throw std::logic_error(
+        "ForceEvaluation: no neighbour lists with a skin for a set of this size");
   double hMax = 0.0;
 #pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
   for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
@@ -210,7 +212,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     w.cells.build(
         n, [&](std::size_t i, int a) { return set.x[i][a]; },
         0.5 * (Kernel::support * hMax + lists.skin), 4 << D);
-    w.listBegin.resize(n), w.listCount.resize(n), w.listed = n;
+    w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
   }
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
@@ -327,9 +329,13 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // pair's terms in registers, j's record gets the opposite share at once (eq. 11-13 are
     // symmetric in i, j up to the masses and the sign of grad W).
     // Returns the band's work (Workspace::bandWork).
-    auto band = [&](int bandIndex) {
+    // Skinned: the lists carry a skin (kept or reused; pairs beyond the support masked), a
+    // compile-time choice so that the lists built at every evaluation pay nothing for it.
+    auto band = [&]<bool Skinned>(int bandIndex) {
       const std::int64_t begin = bandBegin(bandIndex), end = bandBegin(bandIndex + 1);
-      std::vector<int>& list = w.bandLists[bandIndex];
+      // Lists built without a skin are never reused: each particle's goes to the thread's scratch
+      // and is overwritten by the next (a list kept in memory made pass 2 about 6 % slower).
+      std::vector<int>& list = Skinned ? w.bandLists[bandIndex] : scratch.neighbours;
       std::size_t used = 0;      // the entries of `list` taken by the band's particles so far
       std::int64_t rowsOf = -1;  // the cell whose forward rows `scratch.rows` holds
       std::int64_t inRows = 0;   // the candidates in those rows
@@ -353,7 +359,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
 
         int* nb;
         int count = 0;
-        if (reuse) {
+        if (Skinned && reuse) {
           nb = list.data() + w.listBegin[i], count = w.listCount[i];
         } else {
           const std::int64_t c = w.cells.sortedCell(static_cast<int>(i));
@@ -384,9 +390,11 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
               Vi fluidJ;
               __builtin_memcpy(&fluidJ, receives + j, sizeof fluidJ);
               // r2 > 0: a distinct particle at r = 0 adds nothing to any term.
-              const Vi in = (j + iota < rowEnd) & (r2 > 0.0) &
-                            (r2 < reachFactor2 * hSum * hSum + (skinSupport * hSum + skin2)) &
-                            (anyFluid | fluidJ);
+              const Vi in =
+                  (j + iota < rowEnd) & (r2 > 0.0) &
+                  (r2 < (Skinned ? reachFactor2 * hSum * hSum + (skinSupport * hSum + skin2)
+                                 : reachFactor2 * hSum * hSum)) &
+                  (anyFluid | fluidJ);
               const unsigned bits = laneBits(in);  // append the lanes inside, in order
               const Vi32 packed = static_cast<int>(j) + compressOffsets[bits];
               const Vi32 scaled = packed << 4;  // 16 j (pass 2)
@@ -400,8 +408,10 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           // Pad the last vector with the far-away, massless entry n: it adds zero to i.
           const Vi32 padding = Vi32{} + static_cast<int>(16 * nSorted);
           __builtin_memcpy(nb + count, &padding, sizeof padding);
-          w.listBegin[i] = static_cast<int>(used), w.listCount[i] = count;
-          used += (count + lanes - 1) / lanes * lanes;
+          if constexpr (Skinned) {
+            w.listBegin[i] = static_cast<int>(used), w.listCount[i] = count;
+            used += (count + lanes - 1) / lanes * lanes;
+          }
         }
         work += 3 * count;
 
@@ -446,15 +456,17 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           const Vd hSum = hi + hj, hSum2 = hSum * hSum;  // 2 h_ij
           // Inside the support (a listed pair may be beyond it, within the skin) and not a padding
           // lane. The others get a harmless r and F = 0: they add zero to i and j.
-          const Vi inside = (k + iota < count) & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum);
+          const Vi listed = k + iota < count;
+          const Vi inside =
+              Skinned ? listed & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum) : listed;
           const Vd r2c = inside ? r2 : hSum2;
           // Anti-crossing eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h_ij^2 = hSum^2 / 4.
           const Vd rEta2 = r2c + 0.0025 * hSum2;
           const Vd rhoSum = ArtificialViscosity ? rhoi + rhoj : broadcast(1.0);
           const auto inv = pairInverses(r2c, hSum, rEta2, rhoSum);
-          const Vd r = inv.r, hInv = 2.0 * inv.a;                                 // 1 / h_ij
-          const Vd F = inside ? Kernel::template gradOverR<D>(r, inv.rInv, hInv)  // grad_i W_ij =
-                              : Vd{};                                             // F r_ij
+          const Vd r = inv.r, hInv = 2.0 * inv.a;  // 1 / h_ij
+          const Vd gradW = Kernel::template gradOverR<D>(r, inv.rInv, hInv);
+          const Vd F = Skinned ? (inside ? gradW : Vd{}) : gradW;  // grad_i W_ij = F r_ij // F r_ij
           const Vd vDotGradW = vr * F;          // v_ij . grad_i W_ij = v_ji . grad_j W_ji
           Vd pressureTerm = pri + prj;          // eq. (12)
           if constexpr (ArtificialViscosity) {  // eq. (10), approaching pairs only (a select)
@@ -517,7 +529,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // Even bands, then (after the barrier) odd ones: no two bands at work at once share a record.
 #pragma omp barrier
     for (int q = 0; q < 2; ++q) {
-      for (int b = first[q]; b <= last[q]; b += 2) w.bandWork[b] = band(b);
+      for (int b = first[q]; b <= last[q]; b += 2)
+        w.bandWork[b] =
+            skinned ? band.template operator()<true>(b) : band.template operator()<false>(b);
 #pragma omp barrier
     }
 

@@ -357,6 +357,8 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.densityBand = {band[0], band[1]};
   s.dtFloor = numerics.nonNegative("dt_floor", 0.0);
   s.neighbourSkin = numerics.nonNegative("neighbour_skin", 0.1);
+  if (s.neighbourSkin > 1.0)
+    numerics.fail("neighbour_skin", "expected 0 <= skin <= 1 (a fraction of the kernel's support)");
   numerics.rejectUnknown();
   for (int a = 0; a < D; ++a)
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
