@@ -56,9 +56,9 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
       const bool lower = bounds.face[a][0] != FaceKind::open;
       const bool upper = bounds.face[a][1] != FaceKind::open;
-      // Axis 0 scans the fluid, each thread the share it copied: no barrier before it (but
-      // with the last build's codes a thread's images may come from another's share).
-      if (a > 0 || same) {
+      // Axis 0 scans (or, with the last build's codes, images) the fluid, each thread the share
+      // it copied: no barrier before it.
+      if (a > 0) {
 #pragma omp barrier
       }
       // The entries before this axis's images: the fluid and the earlier axes' halo.
@@ -68,10 +68,19 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       std::vector<std::int64_t>& codes = set.halo[a];
       const std::int64_t* first;  // this thread's codes, and its first image
       std::size_t g, many;
-      if (same) {  // the last build's codes, an equal share a thread
-        const std::size_t all = codes.size();
-        first = codes.data() + all * t / nt, many = all * (t + 1) / nt - all * t / nt;
-        g = scanned + all * t / nt;
+      if (same) {
+        // The last build's codes (ascending in k), split as a rescan splits them: a thread takes
+        // the images of its share of the entries so far, whose records it wrote, so that no
+        // record crosses to the other core (an equal share of the codes gave one thread the
+        // images of the other's entries: the floor's, when the rows are the sorted order's).
+        auto split = [&](int u) {
+          const std::int64_t from = 2 * static_cast<std::int64_t>(scanned * u / nt);
+          return static_cast<std::size_t>(std::lower_bound(codes.begin(), codes.end(), from) -
+                                          codes.begin());
+        };
+        const std::size_t begin = split(t), end = t + 1 < nt ? split(t + 1) : codes.size();
+        first = codes.data() + begin, many = end - begin;
+        g = scanned + begin;
       } else {
         mine.clear();
         const Vec<D>* x = set.x.data();
