@@ -575,7 +575,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     };
     const int firstEven = first + first % 2, lastEven = last - last % 2;
 #pragma omp barrier
-    if (firstEven <= lastEven) {
+    if (first <= last && firstEven <= lastEven) {  // (a thread without bands has last = -1)
       runBand(firstEven), evenDone.done(firstEven);
       if (lastEven > firstEven) runBand(lastEven), evenDone.done(lastEven);
       for (int b = firstEven + 2; b < lastEven; b += 2) runBand(b), evenDone.done(b);
