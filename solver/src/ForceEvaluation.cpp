@@ -174,6 +174,7 @@ struct ForceEvaluation<D>::Workspace {
   // where it took more than 5 us). Counted, not timed: the cut is the same in every run.
   std::vector<std::int64_t> bandCost, bandWork;
   BandSignals evenDone;  // the even bands this evaluation has finished
+  double hMax = 0.0;     // the largest h at the last build
 };
 
 namespace {
@@ -239,13 +240,16 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   if (reuse && (w.listed != n || !skinned))
     throw std::logic_error(
         "ForceEvaluation: no neighbour lists with a skin for a set of this size");
-  double hMax = 0.0;
-#pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
-  for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
   // Cells of half the largest reach, support h_max + skin (h_ij <= h_max): neighbours within two
   // cells. The grid may have 4 cells per point per halving, as many as the full-size cells would.
-  // Reused lists keep the last build's cells and sorted order.
+  // Reused lists keep the last build's cells and sorted order, and its h_max for the padding (any
+  // h gives a far-away, massless entry the same zero terms; a scan of all entries split by count
+  // had one thread read the h of the other's fluid at every evaluation).
+  double& hMax = w.hMax;
   if (!reuse) {
+    hMax = 0.0;
+#pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
+    for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
     w.cells.build(
         n, [&](std::size_t i, int a) { return set.x[i][a]; },
         0.5 * (Kernel::support * hMax + lists.skin), 4 << D);
@@ -315,7 +319,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     }
     const int mineBegin = first <= last ? bandBegin(first) : 0;
     const int mineEnd = first <= last ? bandBegin(last + 1) : 0;
-    for (std::int64_t k = mineBegin; k < mineEnd; ++k) {
+    const Share mine{mineBegin, mineEnd};  // walked so that the prefetcher stays inside (walk())
+    walk(mine, [&](std::int64_t k) {
       const int s = order[k];
       // Pass 1 reads x and h by field; the rest is read from the records in 1-D and 2-D (v, rho,
       // p/rho^2, m by field only in 3-D).
@@ -336,7 +341,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
         for (int a = 0; a < D; ++a) w.v[a][k] = set.v[s][a];
         w.rho[k] = rho, w.m[k] = m, w.pOverRho2[k] = pr;
       }
-    }
+    });
     const double* xs[3] = {};  // three components whatever D, for the pair loop's r_ij, v_ij
     const double* vs[3] = {};
     for (int a = 0; a < D; ++a) xs[a] = w.x[a].data(), vs[a] = w.v[a].data();
@@ -586,14 +591,14 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       runBand(b);
     }
 #pragma omp barrier
-    for (std::int64_t k = mineBegin; k < mineEnd; ++k) {
+    walk(mine, [&](std::int64_t k) {
       const int dst = order[k];
-      if (dst >= nFluid) continue;
+      if (dst >= nFluid) return;
       const double* rate = w.rate + rateWidth * k;
       out.drhodt[dst] = rate[0];
       out.dhdt[dst] = VariableH ? hs[k] / D * rate[1] : 0.0;
       for (int a = 0; a < D; ++a) out.dvdt[dst][a] = rate[2 + a] + g[a];
-    }
+    });
   }
   std::swap(w.bandCost, w.bandWork);
 }

@@ -44,12 +44,12 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       double *Rho = set.rho.data(), *M = set.m.data(), *H = set.h.data(), *P = set.p.data(),
              *Mu = set.mu.data();
       int* source = set.source.data();
-      for (std::int64_t i = count * t / nt; i < count * (t + 1) / nt; ++i) {
+      walk(shareOf(count, t, nt), [=](std::int64_t i) {
         X[i] = r[i], V[i] = v[i], Rho[i] = rho[i], M[i] = m[i], H[i] = h[i];
         P[i] = TaitEquationOfState::pressure(rho[i], ph[phase[i]]);
         Mu[i] = ph[phase[i]].mu;
         source[i] = static_cast<int>(i);
-      }
+      });
     }
     auto& mine = set.nearFace[t].entries;
     for (int a = 0; a < D; ++a) {
@@ -61,9 +61,16 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       if (a > 0) {
 #pragma omp barrier
       }
-      // The entries before this axis's images: the fluid and the earlier axes' halo.
+      // The entries before this axis's images: the fluid and the earlier axes' halo. Thread t
+      // takes the fluid it copied, the last thread also the earlier axes' halo (images of images
+      // at the box's edges and corners, few): the codes stay in ascending order, and a thread
+      // images the entries it wrote. (Half of all the entries so far had thread 0 image the floor's
+      // ghosts of some of thread 1's fluid, which thread 1's pair loop then reads.)
       std::size_t scanned = n;
       for (int b = 0; b < a; ++b) scanned += set.halo[b].size();
+      const std::int64_t from = shareOf(count, t, nt).begin,
+                         to = t + 1 < nt ? shareOf(count, t, nt).end
+                                         : static_cast<std::int64_t>(scanned);
       // Codes 2 k + side: entry k's image across the lower (0) or upper (1) face of axis a.
       std::vector<std::int64_t>& codes = set.halo[a];
       const std::int64_t* first;  // this thread's codes, and its first image
@@ -73,19 +80,17 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
         // the images of its share of the entries so far, whose records it wrote, so that no
         // record crosses to the other core (an equal share of the codes gave one thread the
         // images of the other's entries: the floor's, when the rows are the sorted order's).
-        auto split = [&](int u) {
-          const std::int64_t from = 2 * static_cast<std::int64_t>(scanned * u / nt);
-          return static_cast<std::size_t>(std::lower_bound(codes.begin(), codes.end(), from) -
+        auto split = [&](std::int64_t k) {
+          return static_cast<std::size_t>(std::lower_bound(codes.begin(), codes.end(), 2 * k) -
                                           codes.begin());
         };
-        const std::size_t begin = split(t), end = t + 1 < nt ? split(t + 1) : codes.size();
+        const std::size_t begin = split(from), end = t + 1 < nt ? split(to) : codes.size();
         first = codes.data() + begin, many = end - begin;
         g = scanned + begin;
       } else {
         mine.clear();
         const Vec<D>* x = set.x.data();
-        const std::int64_t all = static_cast<std::int64_t>(scanned);
-        for (std::int64_t k = all * t / nt; k < all * (t + 1) / nt; ++k) {
+        for (std::int64_t k = from; k < to; ++k) {
           const double xa = x[k][a];
           if (lower && xa - lo < reach) mine.push_back(2 * k);
           if (upper && hi - xa < reach) mine.push_back(2 * k + 1);
@@ -108,7 +113,9 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       double *rho = set.rho.data(), *p = set.p.data(), *m = set.m.data(), *h = set.h.data(),
              *mu = set.mu.data();
       int* source = set.source.data();
-      for (std::size_t c = 0; c < many; ++c) {
+      // The images in this thread's run of the halo (its last ones walked down: see walk()).
+      walk(Share{0, static_cast<std::int64_t>(many)}, [&](std::int64_t c) {
+        const std::size_t i = g + static_cast<std::size_t>(c);  // the image's entry
         const std::int64_t code = first[c];
         const std::size_t k = static_cast<std::size_t>(code / 2);
         const int side = static_cast<int>(code % 2);
@@ -122,18 +129,17 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
         for (int b = 0; b < D; ++b) {
           const double xb = X[k][b], vb = V[k][b];
           if (b == a) {
-            X[g][b] = periodic ? xb + shift : 2.0 * wall - xb;
-            V[g][b] = periodic ? vb : 2.0 * vw[b] - vb;
+            X[i][b] = periodic ? xb + shift : 2.0 * wall - xb;
+            V[i][b] = periodic ? vb : 2.0 * vw[b] - vb;
           } else {
-            X[g][b] = xb;
-            V[g][b] = noSlip ? 2.0 * vw[b] - vb : vb;
+            X[i][b] = xb;
+            V[i][b] = noSlip ? 2.0 * vw[b] - vb : vb;
           }
         }
         const double xa = X[k][a];
-        p[g] = periodic ? p[k] : p[k] + rho[k] * ghostGravity[a] * (2.0 * wall - 2.0 * xa);
-        rho[g] = rho[k], m[g] = m[k], h[g] = h[k], mu[g] = mu[k], source[g] = source[k];
-        ++g;
-      }
+        p[i] = periodic ? p[k] : p[k] + rho[k] * ghostGravity[a] * (2.0 * wall - 2.0 * xa);
+        rho[i] = rho[k], m[i] = m[k], h[i] = h[k], mu[i] = mu[k], source[i] = source[k];
+      });
     }
   }
 }

@@ -81,18 +81,22 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   const bool skinned = skinFraction_ > 0 && !halo_;
   const bool kept = skinned && static_cast<std::int64_t>(listedAt_.size()) == n;
   double hMax = 0, moved2 = 0, grown = 0;
-#pragma omp parallel for if (n >= parallelFrom()) reduction(max : hMax, moved2, grown)
-  for (std::int64_t i = 0; i < n; ++i) {
+#pragma omp parallel if (n >= parallelFrom()) reduction(max : hMax, moved2, grown)
+  walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
     hMax = std::max(hMax, state.h[i]);
     if (kept) {
       moved2 = std::max(moved2, (state.r[i] - listedAt_[i]).squaredNorm());
       grown = std::max(grown, state.h[i] - listedH_[i]);
     }
-  }
+  });
   const bool reuse = kept && 2.0 * std::sqrt(moved2) + 2.0 * grown < skin_;
   if (!reuse && skinned) {
     skin_ = skinFraction_ * 2.0 * hMax;
-    listedAt_ = state.r, listedH_ = state.h;
+    listedAt_.resize(n), listedH_.resize(n);
+    // Each thread its share, as in the scan above (not one thread the whole copy: the next scan
+    // would then read half of it from the other core).
+    forEachInShares(n,
+                    [&](std::int64_t i) { listedAt_[i] = state.r[i], listedH_[i] = state.h[i]; });
   }
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
@@ -109,9 +113,9 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
 
 template <int D>
 double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
-  // Each extreme and the first particle that reaches it: every thread scans a contiguous share,
-  // and the shares combine by (value, then lower index), so any thread count picks the particle
-  // one thread would.
+  // Each extreme and the first particle that reaches it: every thread scans its share, keeping
+  // the lower index among equal values (walk() does not go in index order), and the shares
+  // combine the same way, so any thread count picks the particle one thread would.
   double hMin = std::numeric_limits<double>::max(), v2Max = 0, a2Max = 0, cMax = 0, nuMax = 0;
   int iH = -1, iV = -1, iA = -1;  // the particles that set each extreme
   const std::int64_t n = static_cast<std::int64_t>(y_.size());
@@ -124,13 +128,17 @@ double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
   {
     double h = std::numeric_limits<double>::max(), v2 = 0, a2 = 0;
     int ih = -1, iv = -1, ia = -1;
-#pragma omp for schedule(static) nowait
-    for (std::int64_t i = 0; i < n; ++i) {
+    walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
+      // Beyond the extreme so far, or at it with a lower index (v2 = a2 = 0 sets no particle).
+      auto takes = [](double x, int k, double best, int bestK, bool larger) {
+        return (larger ? x > best : x < best) || (x == best && bestK >= 0 && k < bestK);
+      };
       const int k = static_cast<int>(i);
-      if (y_.h[i] < h) h = y_.h[i], ih = k;
-      if (y_.v[i].squaredNorm() > v2) v2 = y_.v[i].squaredNorm(), iv = k;
-      if (f_.dvdt[i].squaredNorm() > a2) a2 = f_.dvdt[i].squaredNorm(), ia = k;
-    }
+      if (takes(y_.h[i], k, h, ih, false)) h = y_.h[i], ih = k;
+      const double vi2 = y_.v[i].squaredNorm(), ai2 = f_.dvdt[i].squaredNorm();
+      if (takes(vi2, k, v2, iv, true)) v2 = vi2, iv = k;
+      if (takes(ai2, k, a2, ia, true)) a2 = ai2, ia = k;
+    });
 #pragma omp critical
     {
       if (better(h, ih, hMin, iH, false)) hMin = h, iH = ih;
@@ -160,9 +168,9 @@ void Simulation<D>::wrapPeriodic(Particles<D>& s) const {
     if (bounds_.face[a][0] != FaceKind::periodic) continue;
     const double lo = bounds_.lower[a], period = bounds_.upper[a] - lo;
     const std::int64_t n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for if (n >= parallelFrom())
-    for (std::int64_t i = 0; i < n; ++i)
+    forEachInShares(n, [&](std::int64_t i) {
       s.r[i][a] = lo + (s.r[i][a] - lo) - period * std::floor((s.r[i][a] - lo) / period);
+    });
   }
 }
 
@@ -172,8 +180,8 @@ void Simulation<D>::reflectAtWalls(Particles<D>& s) {
   const std::int64_t n = static_cast<std::int64_t>(s.size());
   long count = 0;
   double deepest = reflectionDepth_;
-#pragma omp parallel for if (n >= parallelFrom()) reduction(+ : count) reduction(max : deepest)
-  for (std::int64_t i = 0; i < n; ++i)
+#pragma omp parallel if (n >= parallelFrom()) reduction(+ : count) reduction(max : deepest)
+  walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
     for (int a = 0; a < D; ++a)
       for (int side = 0; side < 2; ++side) {
         const FaceKind k = bounds_.face[a][side];
@@ -186,6 +194,7 @@ void Simulation<D>::reflectAtWalls(Particles<D>& s) {
         s.v[i][a] = 2 * bounds_.wallVelocity[a][side][a] - s.v[i][a];
         ++count;
       }
+  });
   reflections_ += count, reflectionDepth_ = deepest;
 }
 
@@ -245,15 +254,15 @@ std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, lon
   const double bandLow = scene_.densityBand[0], bandHigh = scene_.densityBand[1];
   const Phase* phases = scene_.phases.data();
   std::int64_t first = n;
-#pragma omp parallel for if (n >= parallelFrom()) reduction(min : first)
-  for (std::int64_t i = 0; i < n; ++i) {
+#pragma omp parallel if (n >= parallelFrom()) reduction(min : first)
+  walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
     const double ratio = s.rho[i] / phases[s.phase[i]].rho0;
     bool plausible = (ratio >= bandLow) & (ratio <= bandHigh) & (s.h[i] > 0) & (s.h[i] <= huge);
     for (int a = 0; a < D; ++a)
       plausible &=
           (s.r[i][a] >= lo[a]) & (s.r[i][a] <= hi[a]) & (s.v[i][a] >= -huge) & (s.v[i][a] <= huge);
     if (!plausible && i < first && checkParticle(s, i, t, step)) first = i;
-  }
+  });
   if (first < n) return checkParticle(s, first, t, step);
   if (check_) return check_(s, t, step);
   return std::nullopt;
@@ -288,31 +297,29 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
     return Failure{FailureCause::dt_collapse, step_ + 1, t_, limiting, m.str()};
   }
   const double dt = std::min(dtStable, dtMax);
-  // Predictor. Every evolved field of y* is written below; the others are copied, not the whole
-  // state (issue 7: no copy of y per step). y*.p is not read: rates() takes p from the EOS, and
-  // the accepted state's p is set at the end of the step.
+  // Predictor. Every evolved field of y* is written below, and m and the phase copied, in the same
+  // loop: each thread writes the particles it reads in every other loop of the step (a copy by one
+  // thread had the other's share of m and phase cross between the cores twice a step). y*.p is
+  // not read: rates() takes p from the EOS, and the accepted state's p is set at the end of the
+  // step.
   yStar_.resize(n);
-  std::copy(y_.m.begin(), y_.m.end(), yStar_.m.begin());
-  std::copy(y_.phase.begin(), y_.phase.end(), yStar_.phase.begin());
   const std::int64_t count = static_cast<std::int64_t>(n);
-  const bool parallel = count >= parallelFrom();
-#pragma omp parallel for if (parallel)
-  for (std::int64_t i = 0; i < count; ++i) {
+  forEachInShares(count, [&](std::int64_t i) {
     yStar_.r[i] = y_.r[i] + dt * y_.v[i];
     yStar_.v[i] = y_.v[i] + dt * f_.dvdt[i];
     yStar_.rho[i] = y_.rho[i] + dt * f_.drhodt[i];
     yStar_.h[i] = y_.h[i] + dt * f_.dhdt[i];
-  }
+    yStar_.m[i] = y_.m[i], yStar_.phase[i] = y_.phase[i];
+  });
   wrapPeriodic(yStar_);
   rates(yStar_, t_ + dt, fStar_);
   // Corrector: the trapezoidal rule over the two rates. Positions first: they need v*.
-#pragma omp parallel for if (parallel)
-  for (std::int64_t i = 0; i < count; ++i) {
+  forEachInShares(count, [&](std::int64_t i) {
     yStar_.r[i] = y_.r[i] + 0.5 * dt * (y_.v[i] + yStar_.v[i]);
     yStar_.v[i] = y_.v[i] + 0.5 * dt * (f_.dvdt[i] + fStar_.dvdt[i]);
     yStar_.rho[i] = y_.rho[i] + 0.5 * dt * (f_.drhodt[i] + fStar_.drhodt[i]);
     yStar_.h[i] = y_.h[i] + 0.5 * dt * (f_.dhdt[i] + fStar_.dhdt[i]);
-  }
+  });
   wrapPeriodic(yStar_);
   reflectAtWalls(yStar_);
   if (reflection_) reflection_(yStar_);
@@ -322,8 +329,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   ++step_;
   if (cellOrderEvery_ > 0 && step_ % cellOrderEvery_ == 0) storeInCellOrder();
   rates(y_, t_, f_);
-#pragma omp parallel for if (parallel)
-  for (std::int64_t i = 0; i < count; ++i) y_.p[i] = set_.p[i];
+  forEachInShares(count, [&](std::int64_t i) { y_.p[i] = set_.p[i]; });
   return std::nullopt;
 }
 
@@ -336,13 +342,12 @@ void Simulation<D>::storeInCellOrder() {
   Particles<D>& to = yStar_;  // free until the next step's predictor
   to.resize(n);
   idScratch_.resize(n);
-#pragma omp parallel for if (n >= parallelFrom())
-  for (std::int64_t k = 0; k < n; ++k) {
+  forEachInShares(n, [&](std::int64_t k) {
     const int i = order_[k];
     to.r[k] = y_.r[i], to.v[k] = y_.v[i], to.rho[k] = y_.rho[i], to.m[k] = y_.m[i];
     to.h[k] = y_.h[i], to.p[k] = y_.p[i], to.phase[k] = y_.phase[i];
     idScratch_[k] = id_[i];
-  }
+  });
   std::swap(y_, to);
   std::swap(id_, idScratch_);
   listedAt_.clear();  // the lists were of the old order
