@@ -323,11 +323,13 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     walk(mine, [&](std::int64_t k) {
       const int s = order[k];
       // Pass 1 reads x and h by field; the rest is read from the records in 1-D and 2-D (v, rho,
-      // p/rho^2, m by field only in 3-D).
-      for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a];
+      // p/rho^2, m by field only in 3-D), and with reused lists, which skip pass 1, everything.
       const double rho = set.rho[s], rhoInv = 1.0 / rho, m = set.m[s], h = set.h[s];
       const double pr = set.p[s] * rhoInv * rhoInv;
-      w.h[k] = h, w.receives[k] = s < nFluid ? -1 : 0;
+      if (D > 2 || !reuse) {
+        for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a];
+        w.h[k] = h, w.receives[k] = s < nFluid ? -1 : 0;
+      }
       double* e = w.extra + extraSize * k;
       e[0] = set.mu[s], e[1] = rhoInv;
       double* rate = w.rate + rateWidth * k;
@@ -384,16 +386,16 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       for (std::int64_t i = begin; i < end; ++i) {
         Vd xi[3], vi[3];
         double rhoi, pri, mi;
-        for (int a = 0; a < 3; ++a) xi[a] = broadcast(a < D ? xs[a][i] : 0.0);
+        double hi;
         if constexpr (D <= 2) {
           const double* r = w.record + recordSize * i;
+          xi[0] = broadcast(r[0]), xi[1] = broadcast(r[1]), xi[2] = Vd{};
           vi[0] = broadcast(r[2]), vi[1] = broadcast(r[3]), vi[2] = Vd{};
-          rhoi = r[5], pri = r[6], mi = r[7];
+          hi = r[4], rhoi = r[5], pri = r[6], mi = r[7];
         } else {
-          for (int a = 0; a < 3; ++a) vi[a] = broadcast(vs[a][i]);
-          rhoi = rhos[i], pri = prs[i], mi = ms[i];
+          for (int a = 0; a < 3; ++a) xi[a] = broadcast(xs[a][i]), vi[a] = broadcast(vs[a][i]);
+          hi = hs[i], rhoi = rhos[i], pri = prs[i], mi = ms[i];
         }
-        const double hi = hs[i];
         const double* ei = w.extra + extraSize * i;
         const double mui = ei[0], rhoInvi = ei[1], mOverRhoi = mi * rhoInvi;
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
@@ -596,7 +598,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       if (dst >= nFluid) return;
       const double* rate = w.rate + rateWidth * k;
       out.drhodt[dst] = rate[0];
-      out.dhdt[dst] = VariableH ? hs[k] / D * rate[1] : 0.0;
+      const double h = D <= 2 ? w.record[recordSize * k + 4] : hs[k];
+      out.dhdt[dst] = VariableH ? h / D * rate[1] : 0.0;
       for (int a = 0; a < D; ++a) out.dvdt[dst][a] = rate[2 + a] + g[a];
     });
   }
