@@ -248,11 +248,15 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   double& hMax = w.hMax;
   if (!reuse) {
     hMax = 0.0;
-#pragma omp parallel for if (nSorted >= parallelFrom()) reduction(max : hMax)
-    for (std::int64_t k = 0; k < nSorted; ++k) hMax = std::max(hMax, set.h[k]);
+    // Split as the interaction set's build splits it (the fluid evenly, the halo to the last
+    // thread), so that each thread reads the entries it wrote.
+    const std::int64_t nFluidEntries = static_cast<std::int64_t>(set.nFluid);
+#pragma omp parallel if (nSorted >= parallelFrom()) reduction(max : hMax)
+    walk(shareOf(nSorted, nFluidEntries, omp_get_thread_num(), omp_get_num_threads()),
+         [&](std::int64_t k) { hMax = std::max(hMax, set.h[k]); });
     w.cells.build(
         n, [&](std::size_t i, int a) { return set.x[i][a]; },
-        0.5 * (Kernel::support * hMax + lists.skin), 4 << D);
+        0.5 * (Kernel::support * hMax + lists.skin), 4 << D, set.nFluid);
     w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
   }
   const auto& order = w.cells.order();

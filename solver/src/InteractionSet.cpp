@@ -68,9 +68,7 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       // ghosts of some of thread 1's fluid, which thread 1's pair loop then reads.)
       std::size_t scanned = n;
       for (int b = 0; b < a; ++b) scanned += set.halo[b].size();
-      const std::int64_t from = shareOf(count, t, nt).begin,
-                         to = t + 1 < nt ? shareOf(count, t, nt).end
-                                         : static_cast<std::int64_t>(scanned);
+      const auto [from, to] = shareOf(static_cast<std::int64_t>(scanned), count, t, nt);
       // Codes 2 k + side: entry k's image across the lower (0) or upper (1) face of axis a.
       std::vector<std::int64_t>& codes = set.halo[a];
       const std::int64_t* first;  // this thread's codes, and its first image

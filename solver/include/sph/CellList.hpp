@@ -35,17 +35,21 @@ class CellList {
 
   // The same, for points given by an accessor pos(i, axis); the arrays are reused between builds
   // (no allocation once they have grown to the largest n seen).
-  // `cellsPerPoint` bounds the grid's size (cells are doubled until it holds).
+  // `cellsPerPoint` bounds the grid's size (cells are doubled until it holds). The threads split
+  // the points as shareOf(n, leading, ...) does (Parallel.hpp; leading = n: evenly).
   template <class Pos>
-  void build(std::size_t n, Pos&& pos, double cellSize, int cellsPerPoint = 4) {
+  void build(std::size_t n, Pos&& pos, double cellSize, int cellsPerPoint = 4,
+             std::size_t leading = ~std::size_t{0}) {
     const std::int64_t count = static_cast<std::int64_t>(n);
+    const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
     const bool parallel = count >= parallelFrom();
     double lo[D], hi[D];
     for (int a = 0; a < D; ++a) lo[a] = n > 0 ? pos(0, a) : 0.0, hi[a] = lo[a];
-#pragma omp parallel for if (parallel) reduction(min : lo[:D]) reduction(max : hi[:D])
-    for (std::int64_t i = 1; i < count; ++i)
+#pragma omp parallel if (parallel) reduction(min : lo[:D]) reduction(max : hi[:D])
+    walk(shareOf(count, lead, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
       for (int a = 0; a < D; ++a)
         lo[a] = std::min(lo[a], pos(i, a)), hi[a] = std::max(hi[a], pos(i, a));
+    });
     // An axis at least twice as long as the last is numbered slowest (the longest such), the
     // others keep their order. (Only a clearly longer axis: on a near-square box the points'
     // usual lattice order, axis 0 fastest, stays the sorted order's.)
@@ -85,7 +89,7 @@ class CellList {
 #pragma omp parallel num_threads(threads) if (parallel)
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-      const std::int64_t begin = count * t / nt, end = count * (t + 1) / nt;
+      const auto [begin, end] = shareOf(count, lead, t, nt);
       int* mine = counts_.data() + static_cast<std::size_t>(t) * (total + 1);
       std::fill(mine, mine + total + 1, 0);  // each thread its own counts
       // Points in cell order (as Simulation::keepCellOrder stores them) come in runs of one

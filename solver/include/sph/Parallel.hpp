@@ -40,6 +40,13 @@ inline Share shareOf(std::int64_t n, int t, int nt) {
   return {n * t / nt, n * (t + 1) / nt};
 }
 
+// The same over [0, n) where only [0, leading) is split evenly and the last thread also takes
+// [leading, n): the shares of a loop over the interaction set (the fluid, then the halo of
+// images) that match the fluid's, so that a thread reads the fluid entries it wrote.
+inline Share shareOf(std::int64_t n, std::int64_t leading, int t, int nt) {
+  return {leading * t / nt, t + 1 < nt ? leading * (t + 1) / nt : n};
+}
+
 // Walks a share up to its last `prefetchTail` items, then down. Walked up to its end, a share has
 // the core's hardware prefetcher read on into the next share, so that the next thread finds the
 // lines it is about to write in the other core's cache, at every loop. Measured on the 2-core
