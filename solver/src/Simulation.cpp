@@ -119,20 +119,20 @@ double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
   double hMin = std::numeric_limits<double>::max(), v2Max = 0, a2Max = 0, cMax = 0, nuMax = 0;
   int iH = -1, iV = -1, iA = -1;  // the particles that set each extreme
   const std::int64_t n = static_cast<std::int64_t>(y_.size());
-  auto better = [](double x, int i, double best, int bestI, bool larger) {
-    if (i < 0) return false;
-    if (bestI < 0 || (larger ? x > best : x < best)) return true;
-    return x == best && i < bestI;
+  // Beyond the extreme so far, or at it with a lower index (an extreme of 0 with no particle
+  // yet stays without one: v2 = a2 = 0 sets none).
+  auto takes = [](double x, int i, double best, int bestI, bool larger) {
+    return (larger ? x > best : x < best) || (x == best && bestI >= 0 && i < bestI);
+  };
+  // The same for combining the shares, each with or without its particle.
+  auto better = [&](double x, int i, double best, int bestI, bool larger) {
+    return i >= 0 && (bestI < 0 || takes(x, i, best, bestI, larger));
   };
 #pragma omp parallel if (n >= parallelFrom())
   {
     double h = std::numeric_limits<double>::max(), v2 = 0, a2 = 0;
     int ih = -1, iv = -1, ia = -1;
     walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
-      // Beyond the extreme so far, or at it with a lower index (v2 = a2 = 0 sets no particle).
-      auto takes = [](double x, int k, double best, int bestK, bool larger) {
-        return (larger ? x > best : x < best) || (x == best && bestK >= 0 && k < bestK);
-      };
       const int k = static_cast<int>(i);
       if (takes(y_.h[i], k, h, ih, false)) h = y_.h[i], ih = k;
       const double vi2 = y_.v[i].squaredNorm(), ai2 = f_.dvdt[i].squaredNorm();

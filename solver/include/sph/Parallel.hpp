@@ -52,7 +52,7 @@ inline Share shareOf(std::int64_t n, std::int64_t leading, int t, int nt) {
 // lines it is about to write in the other core's cache, at every loop. Measured on the 2-core
 // machine (vCPUs on cores that share a cache): a loop over seven arrays of 1,250 items, split in
 // two, took the second half's thread 49 ms against the first's 37 ms (20,000 passes), either
-// thread, and 37 ms with the first half's last 64 items walked down; in the dam break at dx 0.01
+// thread, 37-40 ms with the first half's last 64 items walked down; in the dam break at dx 0.01
 // on 2 threads, walking every loop of a step so cut it from 3.40-3.53 s to 2.93-3.00 s with the
 // vCPUs on cores that do not share a cache, and from 1.97-2.05 s to 1.90-1.96 s when they do.
 inline constexpr std::int64_t prefetchTail = 256;  // twice the 128 that took all of the 49 - 37 ms
