@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "sph/CacheLines.hpp"
 #include "sph/Parallel.hpp"
 
 namespace sph {
@@ -137,7 +138,7 @@ class BandSignals {
     __builtin_ia32_pause();
 #endif
   }
-  std::vector<std::uint64_t> flags_;
+  LineVector<std::uint64_t> flags_;
   std::uint64_t evaluation_ = 0;
 };
 }  // namespace
@@ -147,32 +148,32 @@ struct ForceEvaluation<D>::Workspace {
   CellList<D> cells;
   // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k (v, rho, p/rho^2, m by
   // field in 3-D only).
-  std::array<std::vector<double>, D> x, v;
-  std::vector<double> h, rho, pOverRho2, m;
-  std::vector<std::int64_t> receives;  // all ones for a fluid entry, zero for the halo
+  std::array<LineVector<double>, D> x, v;
+  LineVector<double> h, rho, pOverRho2, m;
+  LineVector<std::int64_t> receives;  // all ones for a fluid entry, zero for the halo
   // For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho, p/rho^2, m}
   // (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors and transposes
   // them, instead of gathering each field. For every D, a 16-byte record {mu, 1/rho},
   // and the rates' record (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by axis).
-  std::vector<double> recordStore, extraStore, rateStore;
-  double *record = nullptr, *extra = nullptr, *rate = nullptr;  // 64-byte aligned
+  LineVector<double> recordStore, extraStore, rateStore;
+  double *record = nullptr, *extra = nullptr, *rate = nullptr;  // their data: on cache lines
   struct alignas(64) Scratch {  // one thread's: a cell's forward rows, a particle's neighbours
-    std::vector<std::array<int, 2>> rows;
-    std::vector<int> neighbours;
+    LineVector<std::array<int, 2>> rows;
+    LineVector<int> neighbours;
   };
   std::vector<Scratch> scratch;
   // The neighbour lists of the last build (NeighbourLists): band b's particles' lists one after
   // the other in bandLists[b], each padded to whole vectors; sorted entry k's starts at
   // listBegin[k] and holds listCount[k] neighbours. `listed` entries were in that set.
-  std::vector<std::vector<int>> bandLists;
-  std::vector<int> listBegin, listCount;
+  std::vector<LineVector<int>> bandLists;
+  LineVector<int> listBegin, listCount;
   std::size_t listed = 0;
   // The work of each band of two cell layers, in this evaluation (bandWork, written by the band's
   // thread) and in the last (bandCost), by which the threads' shares are cut: the candidates
   // pass 1 tests plus 3 per neighbour pass 2 takes (a dam break at dx 0.01, one thread: 1.9 ns
   // a candidate, 6.1 ns a neighbour, fitted to the bands' times; within 25 % of each band's time
   // where it took more than 5 us). Counted, not timed: the cut is the same in every run.
-  std::vector<std::int64_t> bandCost, bandWork;
+  LineVector<std::int64_t> bandCost, bandWork;
   BandSignals evenDone;  // the even bands this evaluation has finished
   double hMax = 0.0;     // the largest h at the last build
 };
@@ -222,11 +223,10 @@ inline PairInverses pairInverses(Vd r2, Vd a, Vd b, Vd c) {
 #endif
 }
 
-// Grows `store` to hold n doubles from a 64-byte boundary and returns that boundary.
-double* aligned(std::vector<double>& store, std::size_t n) {
-  store.resize(n + 8);
-  const auto address = reinterpret_cast<std::uintptr_t>(store.data());
-  return store.data() + (64 - address % 64) % 64 / sizeof(double);
+// Grows `store` to hold n doubles and returns its data (on a cache line: LineVector).
+double* grown(LineVector<double>& store, std::size_t n) {
+  store.resize(n);
+  return store.data();
 }
 
 template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool VariableH, int D>
@@ -268,9 +268,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
   }
   constexpr int recordSize = 8, extraSize = 2, rateWidth = D <= 2 ? 4 : 8;
-  if constexpr (D <= 2) w.record = aligned(w.recordStore, recordSize * nPadded);
-  w.extra = aligned(w.extraStore, extraSize * nPadded);
-  w.rate = aligned(w.rateStore, rateWidth * nPadded);
+  if constexpr (D <= 2) w.record = grown(w.recordStore, recordSize * nPadded);
+  w.extra = grown(w.extraStore, extraSize * nPadded);
+  w.rate = grown(w.rateStore, rateWidth * nPadded);
   for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
     for (int a = 0; a < D; ++a) w.x[a][k] = 1e100;
     w.h[k] = hMax, w.receives[k] = 0;
@@ -382,7 +382,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       const std::int64_t begin = bandBegin(bandIndex), end = bandBegin(bandIndex + 1);
       // Lists built without a skin are never reused: each particle's goes to the thread's scratch
       // and is overwritten by the next (a list kept in memory made pass 2 about 6 % slower).
-      std::vector<int>& list = Skinned ? w.bandLists[bandIndex] : scratch.neighbours;
+      LineVector<int>& list = Skinned ? w.bandLists[bandIndex] : scratch.neighbours;
       std::size_t used = 0;      // the entries of `list` taken by the band's particles so far
       std::int64_t rowsOf = -1;  // the cell whose forward rows `scratch.rows` holds
       std::int64_t inRows = 0;   // the candidates in those rows

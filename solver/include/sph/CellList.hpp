@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sph/CacheLines.hpp"
 #include "sph/Parallel.hpp"
 #include "sph/Vector.hpp"
 
@@ -28,7 +29,8 @@ namespace sph {
 template <int D>
 class CellList {
  public:
-  void build(const std::vector<Vec<D>>& x, double cellSize) {
+  template <class Allocator>
+  void build(const std::vector<Vec<D>, Allocator>& x, double cellSize) {
     build(
         x.size(), [&](std::size_t i, int a) { return x[i][a]; }, cellSize);
   }
@@ -155,7 +157,7 @@ class CellList {
   }
 
   // order()[k] is the point at position k of the cell-sorted sequence.
-  const std::vector<int>& order() const {
+  const LineVector<int>& order() const {
     return order_;
   }
   // The cell of the point at sorted position k.
@@ -302,8 +304,8 @@ class CellList {
   Vec<D> lo_ = Vec<D>::Zero();  // lo_, dims_: by numbering axis
   double size_ = 1.0, inverse_ = 1.0;
   std::array<int, D> dims_{};
-  std::vector<int> start_, order_, counts_, blockSum_;
-  std::vector<std::int64_t> cellOf_, sortedCell_;
+  LineVector<int> start_, order_, counts_, blockSum_;
+  LineVector<std::int64_t> cellOf_, sortedCell_;
 };
 
 }  // namespace sph

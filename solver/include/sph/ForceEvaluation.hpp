@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sph/CacheLines.hpp"
 #include "sph/CellList.hpp"
 #include "sph/InteractionSet.hpp"
 #include "sph/Kernels.hpp"
@@ -21,8 +22,8 @@ struct TermSwitches {
 
 template <int D>
 struct Derivatives {
-  std::vector<Vec<D>> dvdt;
-  std::vector<double> drhodt, dhdt;
+  LineVector<Vec<D>> dvdt;
+  LineVector<double> drhodt, dhdt;
   void resize(std::size_t n) { dvdt.resize(n), drhodt.resize(n), dhdt.resize(n); }
 };
 

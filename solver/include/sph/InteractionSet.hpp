@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sph/Boundaries.hpp"
+#include "sph/CacheLines.hpp"
 #include "sph/Particles.hpp"
 
 namespace sph {
@@ -16,9 +17,9 @@ struct Phase;
 
 template <int D>
 struct InteractionSet {
-  std::vector<Vec<D>> x, v;
-  std::vector<double> rho, p, m, h, mu;
-  std::vector<int> source;  // the fluid particle an entry stands for
+  LineVector<Vec<D>> x, v;
+  LineVector<double> rho, p, m, h, mu;
+  LineVector<int> source;  // the fluid particle an entry stands for
   std::size_t nFluid = 0;
   // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step;
   // a cache line each, so that two threads' appends do not contend for one).

@@ -3,19 +3,20 @@
 #include <cstddef>
 #include <vector>
 
+#include "sph/CacheLines.hpp"
 #include "sph/Vector.hpp"
 
 namespace sph {
 
 template <int D>
 struct Particles {
-  std::vector<Vec<D>> r;      // position [m]
-  std::vector<Vec<D>> v;      // velocity [m/s]
-  std::vector<double> rho;    // density [kg/m^3]
-  std::vector<double> m;      // mass [kg]
-  std::vector<double> h;      // smoothing length [m]
-  std::vector<double> p;      // pressure [Pa], from the equation of state
-  std::vector<int> phase;     // index into Scene::phases
+  LineVector<Vec<D>> r;    // position [m]
+  LineVector<Vec<D>> v;    // velocity [m/s]
+  LineVector<double> rho;  // density [kg/m^3]
+  LineVector<double> m;    // mass [kg]
+  LineVector<double> h;    // smoothing length [m]
+  LineVector<double> p;    // pressure [Pa], from the equation of state
+  LineVector<int> phase;   // index into Scene::phases
 
   std::size_t size() const { return r.size(); }
   void resize(std::size_t n) {

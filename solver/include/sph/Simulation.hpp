@@ -118,8 +118,8 @@ class Simulation {
   double t_ = 0.0, dt_ = 0.0, dtFloor_ = 0.0;
   TimeStepLimit limit_ = TimeStepLimit::acoustic;
   long step_ = 0, evaluations_ = 0, reflections_ = 0, reusedLists_ = 0;
-  std::vector<Vec<D>> listedAt_;  // the positions and h at the lists' build
-  std::vector<double> listedH_;
+  LineVector<Vec<D>> listedAt_;  // the positions and h at the lists' build
+  LineVector<double> listedH_;
   double reflectionDepth_ = 0.0;
   bool ratesValid_ = false;
 };
