@@ -3,8 +3,9 @@
 // pair loop's copies and lists) start on a cache line and end on one. From the heap, one array's
 // end and the next array's start shared a line; the last thread writes every array's end and the
 // first thread its start, so such lines went from core to core in every loop of a step. The dam
-// break at dx 0.01 on two threads whose vCPUs do not share a cache: 2.84-2.92 s -> 2.64-2.83 s
-// (median 2.65 s, alternated with the parent; the same bits; no change when they share one).
+// break at dx 0.01 on two threads whose vCPUs do not share a cache: 2.81-2.93 s (median 2.87 s, 9
+// runs) -> 2.51-2.83 s (median 2.65 s, 7 runs), alternated with the parent; the same bits; no
+// change when they share one.
 #include <cstddef>
 #include <new>
 #include <vector>
