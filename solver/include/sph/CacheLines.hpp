@@ -3,8 +3,8 @@
 // pair loop's copies and lists) start on a cache line and end on one. From the heap, one array's
 // end and the next array's start shared a line; the last thread writes every array's end and the
 // first thread its start, so such lines went from core to core in every loop of a step. The dam
-// break at dx 0.01 on two threads whose vCPUs do not share a cache: 2.81-2.93 s (median 2.87 s, 9
-// runs) -> 2.51-2.83 s (median 2.65 s, 7 runs), alternated with the parent; the same bits; no
+// break at dx 0.01 on two threads whose vCPUs do not share a cache: 2.81-3.33 s (median 2.90 s,
+// 14 runs) -> 2.51-2.84 s (median 2.67 s, 11 runs), alternated with the parent; the same bits; no
 // change when they share one.
 #include <cstddef>
 #include <new>
