@@ -51,7 +51,17 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
         source[i] = static_cast<int>(i);
       });
     }
-    auto& mine = set.nearFace[t].entries;
+    auto& near = set.nearFace[t];
+    auto& mine = near.entries;
+    // The runs of entries this thread wrote, in ascending order: its share of the fluid, then,
+    // after each axis, the images it wrote of each run before. The images across the next axis of
+    // those entries are its too: an entry's record does not cross to the other core to be imaged.
+    // (With the earlier axes' halo imaged by the last thread, thread 1 imaged, across the floor,
+    // thread 0's images of the walls at the two bottom corners, at every evaluation.)
+    std::array<Share, 8> runs{};
+    static_assert(D <= 3, "runs: 2^D at most");
+    int nRuns = 1;
+    runs[0] = shareOf(count, t, nt);
     for (int a = 0; a < D; ++a) {
       const double lo = bounds.lower[a], hi = bounds.upper[a], period = hi - lo;
       const bool lower = bounds.face[a][0] != FaceKind::open;
@@ -61,37 +71,40 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       if (a > 0) {
 #pragma omp barrier
       }
-      // The entries before this axis's images: the fluid and the earlier axes' halo. Thread t
-      // takes the fluid it copied, the last thread also the earlier axes' halo (images of images
-      // at the box's edges and corners, few): the codes stay in ascending order, and a thread
-      // images the entries it wrote. (Half of all the entries so far had thread 0 image the floor's
-      // ghosts of some of thread 1's fluid, which thread 1's pair loop then reads.)
+      // The entries before this axis's images: the fluid and the earlier axes' halo.
       std::size_t scanned = n;
       for (int b = 0; b < a; ++b) scanned += set.halo[b].size();
-      const auto [from, to] = shareOf(static_cast<std::int64_t>(scanned), count, t, nt);
-      // Codes 2 k + side: entry k's image across the lower (0) or upper (1) face of axis a.
+      // Codes 2 k + side: entry k's image across the lower (0) or upper (1) face of axis a,
+      // ascending in k. The images of a run of entries follow those of the runs before it, all
+      // threads' runs taken together in entry order: the order is the serial one whatever the
+      // thread count. `block[r]`: where run r's images begin in the halo of this axis, and how
+      // many; `from[r]`: their codes.
       std::vector<std::int64_t>& codes = set.halo[a];
-      const std::int64_t* first;  // this thread's codes, and its first image
-      std::size_t g, many;
+      std::array<Share, 8> block{};
+      std::array<const std::int64_t*, 8> from{};
       if (same) {
-        // The last build's codes (ascending in k), split as a rescan splits them: a thread takes
-        // the images of its share of the entries so far, whose records it wrote, so that no
-        // record crosses to the other core (an equal share of the codes gave one thread the
-        // images of the other's entries: the floor's, when the rows are the sorted order's).
+        // The last build's codes, split at the runs' ends.
         auto split = [&](std::int64_t k) {
-          return static_cast<std::size_t>(std::lower_bound(codes.begin(), codes.end(), 2 * k) -
-                                          codes.begin());
+          return static_cast<std::int64_t>(std::lower_bound(codes.begin(), codes.end(), 2 * k) -
+                                           codes.begin());
         };
-        const std::size_t begin = split(from), end = t + 1 < nt ? split(to) : codes.size();
-        first = codes.data() + begin, many = end - begin;
-        g = scanned + begin;
+        for (int r = 0; r < nRuns; ++r) {
+          block[r] = {split(runs[r].begin), split(runs[r].end)};
+          from[r] = codes.data() + block[r].begin;
+        }
       } else {
         mine.clear();
         const Vec<D>* x = set.x.data();
-        for (std::int64_t k = from; k < to; ++k) {
-          const double xa = x[k][a];
-          if (lower && xa - lo < reach) mine.push_back(2 * k);
-          if (upper && hi - xa < reach) mine.push_back(2 * k + 1);
+        near.runs = nRuns;
+        for (int r = 0; r < nRuns; ++r) {
+          const std::size_t before = mine.size();
+          for (std::int64_t k = runs[r].begin; k < runs[r].end; ++k) {
+            const double xa = x[k][a];
+            if (lower && xa - lo < reach) mine.push_back(2 * k);
+            if (upper && hi - xa < reach) mine.push_back(2 * k + 1);
+          }
+          near.runBegin[r] = runs[r].begin;
+          near.runCount[r] = static_cast<std::int64_t>(mine.size() - before);
         }
 #pragma omp barrier
 #pragma omp single
@@ -101,43 +114,62 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
           set.resize(total);
           codes.resize(total - scanned);
         }
-        g = scanned;
-        for (int u = 0; u < t; ++u) g += set.nearFace[u].entries.size();
-        std::copy(mine.begin(), mine.end(), codes.begin() + (g - scanned));
-        first = mine.data(), many = mine.size();
+        std::size_t listed = 0;
+        for (int r = 0; r < nRuns; ++r) {
+          // Every thread's images of the entries before this run come first.
+          std::int64_t offset = 0;
+          for (int u = 0; u < nt; ++u) {
+            const auto& other = set.nearFace[u];
+            for (int q = 0; q < other.runs; ++q)
+              if (other.runBegin[q] < runs[r].begin) offset += other.runCount[q];
+          }
+          block[r] = {offset, offset + near.runCount[r]};
+          from[r] = mine.data() + listed;
+          std::copy(from[r], from[r] + near.runCount[r], codes.begin() + offset);
+          listed += static_cast<std::size_t>(near.runCount[r]);
+        }
       }
       Vec<D>* X = set.x.data();
       Vec<D>* V = set.v.data();
       double *rho = set.rho.data(), *p = set.p.data(), *m = set.m.data(), *h = set.h.data(),
              *mu = set.mu.data();
       int* source = set.source.data();
-      // The images in this thread's run of the halo (its last ones walked down: see walk()).
-      walk(Share{0, static_cast<std::int64_t>(many)}, [&](std::int64_t c) {
-        const std::size_t i = g + static_cast<std::size_t>(c);  // the image's entry
-        const std::int64_t code = first[c];
-        const std::size_t k = static_cast<std::size_t>(code / 2);
-        const int side = static_cast<int>(code % 2);
-        const FaceKind kind = bounds.face[a][side];
-        const bool periodic = kind == FaceKind::periodic, noSlip = kind == FaceKind::no_slip;
-        const double wall = side == 0 ? lo : hi, shift = side == 0 ? period : -period;
-        const Vec<D>& vw = bounds.wallVelocity[a][side];
-        // Component by component: a vector built on the stack and changed in one component
-        // was read back before its store had landed, a stall a ghost (the dam break's set at
-        // 1,250 particles, one thread, best of 5,000: 13.0 -> 10.0 us).
-        for (int b = 0; b < D; ++b) {
-          const double xb = X[k][b], vb = V[k][b];
-          if (b == a) {
-            X[i][b] = periodic ? xb + shift : 2.0 * wall - xb;
-            V[i][b] = periodic ? vb : 2.0 * vw[b] - vb;
-          } else {
-            X[i][b] = xb;
-            V[i][b] = noSlip ? 2.0 * vw[b] - vb : vb;
+      // The images of each run (its last ones walked down: see walk()); a run's images are a run
+      // of this thread's for the next axis.
+      const int sourceRuns = nRuns;
+      for (int r = 0; r < sourceRuns; ++r) {
+        const std::size_t g = scanned + static_cast<std::size_t>(block[r].begin);
+        const std::int64_t* first = from[r];
+        if (block[r].end > block[r].begin)
+          runs[nRuns++] = {static_cast<std::int64_t>(g),
+                           static_cast<std::int64_t>(scanned) + block[r].end};
+        walk(Share{0, block[r].end - block[r].begin}, [&](std::int64_t c) {
+          const std::size_t i = g + static_cast<std::size_t>(c);  // the image's entry
+          const std::int64_t code = first[c];
+          const std::size_t k = static_cast<std::size_t>(code / 2);
+          const int side = static_cast<int>(code % 2);
+          const FaceKind kind = bounds.face[a][side];
+          const bool periodic = kind == FaceKind::periodic, noSlip = kind == FaceKind::no_slip;
+          const double wall = side == 0 ? lo : hi, shift = side == 0 ? period : -period;
+          const Vec<D>& vw = bounds.wallVelocity[a][side];
+          // Component by component: a vector built on the stack and changed in one component
+          // was read back before its store had landed, a stall a ghost (the dam break's set at
+          // 1,250 particles, one thread, best of 5,000: 13.0 -> 10.0 us).
+          for (int b = 0; b < D; ++b) {
+            const double xb = X[k][b], vb = V[k][b];
+            if (b == a) {
+              X[i][b] = periodic ? xb + shift : 2.0 * wall - xb;
+              V[i][b] = periodic ? vb : 2.0 * vw[b] - vb;
+            } else {
+              X[i][b] = xb;
+              V[i][b] = noSlip ? 2.0 * vw[b] - vb : vb;
+            }
           }
-        }
-        const double xa = X[k][a];
-        p[i] = periodic ? p[k] : p[k] + rho[k] * ghostGravity[a] * (2.0 * wall - 2.0 * xa);
-        rho[i] = rho[k], m[i] = m[k], h[i] = h[k], mu[i] = mu[k], source[i] = source[k];
-      });
+          const double xa = X[k][a];
+          p[i] = periodic ? p[k] : p[k] + rho[k] * ghostGravity[a] * (2.0 * wall - 2.0 * xa);
+          rho[i] = rho[k], m[i] = m[k], h[i] = h[k], mu[i] = mu[k], source[i] = source[k];
+        });
+      }
     }
   }
 }

@@ -22,9 +22,13 @@ struct InteractionSet {
   LineVector<int> source;  // the fluid particle an entry stands for
   std::size_t nFluid = 0;
   // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step;
-  // a cache line each, so that two threads' appends do not contend for one).
+  // a cache line each, so that two threads' appends do not contend for one), and the runs of
+  // entries the thread wrote, scanned for the current axis: where each begins and how many of
+  // `entries` are its.
   struct alignas(64) NearFace {
     std::vector<std::int64_t> entries;
+    int runs = 0;
+    std::array<std::int64_t, 4> runBegin{}, runCount{};
   };
   std::vector<NearFace> nearFace;
   // The halo's members by axis: 2 k + side for entry k's image across that axis's lower (0) or
