@@ -95,11 +95,31 @@ class Simulation {
   // acceleration.
   double timeStep(TimeStepLimit& limit, int& particle) const;
   std::optional<Failure> check(const Particles<D>& s, double t, long step) const;
+  // The failure of particle `first` (none if it is past the end), else the custom check's.
+  std::optional<Failure> failureFrom(const Particles<D>& s, std::int64_t first, double t,
+                                     long step) const;
   std::optional<Failure> checkParticle(const Particles<D>& s, std::size_t i, double t,
                                        long step) const;
-  void wrapPeriodic(Particles<D>& s) const;
-  void reflectAtWalls(Particles<D>& s);
+  // A test without branches that every good particle passes (finite fields, density in its
+  // band, inside the box's non-periodic faces); only one that fails it gets checkParticle's.
+  struct Plausible {
+    double lo[D], hi[D], bandLow, bandHigh;
+    const Phase* phases;
+    Plausible(const Scene& scene, const Boundaries<D>& bounds);
+    bool operator()(const Particles<D>& s, std::int64_t i) const;
+  };
+  void wrapPeriodic(Particles<D>& s, std::int64_t i) const;
+  void reflectAtWalls(Particles<D>& s, std::int64_t i, long& count, double& deepest) const;
   void storeInCellOrder();
+  // How far the particles moved, and h grew, since the neighbour lists were built (if `listed`),
+  // and the largest h: whether rates() keeps the lists. Gathered in the loop that wrote the state.
+  struct Motion {
+    double hMax, moved2, grown;
+    bool listed;
+    void add(const Particles<D>& s, std::int64_t i, const Simulation& sim);
+  };
+  Motion motionStart(std::int64_t n) const;
+  void rates(const Particles<D>& state, double t, Derivatives<D>& out, const Motion& motion);
 
   Scene scene_;
   Boundaries<D> bounds_;
