@@ -326,8 +326,8 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   // Predictor. Every evolved field of y* is written below, and m and the phase copied, in the same
   // loop: each thread writes the particles it reads in every other loop of the step (a copy by one
   // thread had the other's share of m and phase cross between the cores twice a step). y*.p is
-  // not read: rates() takes p from the EOS, and the accepted state's p is set at the end of the
-  // step.
+  // not read: rates() takes p from the EOS, and the corrector sets the accepted state's p (the
+  // same EOS, so the same p the set's fluid entries get).
   // The per-particle work after each update (periodic wrap, wall reflection, the checks, the
   // lists' motion) is done in the update's own loop: a parallel region less each (0.6 us on two
   // threads whose cores share a cache, more when not: issue 7).
@@ -358,6 +358,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   // reflection moves particles after this loop: the checks and the motion then wait for it.
   const bool ownReflection = static_cast<bool>(reflection_);
   const Plausible plausible(scene_, bounds_);
+  const Phase* phases = scene_.phases.data();
   motion = motionStart(count);
   {
     long reflected = 0;
@@ -373,6 +374,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
         yStar_.r[i] = y_.r[i] + 0.5 * dt * (y_.v[i] + yStar_.v[i]);
         yStar_.v[i] = y_.v[i] + 0.5 * dt * (f_.dvdt[i] + fStar_.dvdt[i]);
         yStar_.rho[i] = y_.rho[i] + 0.5 * dt * (f_.drhodt[i] + fStar_.drhodt[i]);
+        yStar_.p[i] = TaitEquationOfState::pressure(yStar_.rho[i], phases[yStar_.phase[i]]);
         yStar_.h[i] = y_.h[i] + 0.5 * dt * (f_.dhdt[i] + fStar_.dhdt[i]);
         wrapPeriodic(yStar_, i);
         reflectAtWalls(yStar_, i, reflected, deepest);
@@ -401,7 +403,6 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
     rates(y_, t_, f_);
   else
     rates(y_, t_, f_, motion);
-  forEachInShares(count, [&](std::int64_t i) { y_.p[i] = set_.p[i]; });
   return std::nullopt;
 }
 
