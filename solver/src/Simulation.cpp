@@ -72,7 +72,8 @@ std::vector<std::string> Simulation<D>::termNames() const {
 }
 
 template <int D>
-void Simulation<D>::Motion::add(const Particles<D>& s, std::int64_t i, const Simulation& sim) {
+inline void Simulation<D>::Motion::add(const Particles<D>& s, std::int64_t i,
+                                       const Simulation& sim) {
   hMax = std::max(hMax, s.h[i]);
   if (listed) {
     moved2 = std::max(moved2, (s.r[i] - sim.listedAt_[i]).squaredNorm());
@@ -186,7 +187,7 @@ double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
 }
 
 template <int D>
-void Simulation<D>::wrapPeriodic(Particles<D>& s, std::int64_t i) const {
+inline void Simulation<D>::wrapPeriodic(Particles<D>& s, std::int64_t i) const {
   for (int a = 0; a < D; ++a) {
     if (bounds_.face[a][0] != FaceKind::periodic) continue;
     const double lo = bounds_.lower[a], period = bounds_.upper[a] - lo;
@@ -195,8 +196,8 @@ void Simulation<D>::wrapPeriodic(Particles<D>& s, std::int64_t i) const {
 }
 
 template <int D>
-void Simulation<D>::reflectAtWalls(Particles<D>& s, std::int64_t i, long& count,
-                                   double& deepest) const {
+inline void Simulation<D>::reflectAtWalls(Particles<D>& s, std::int64_t i, long& count,
+                                          double& deepest) const {
   const double tolerated = 0.5 * scene_.dx;
   for (int a = 0; a < D; ++a)
     for (int side = 0; side < 2; ++side) {
@@ -266,7 +267,7 @@ Simulation<D>::Plausible::Plausible(const Scene& scene, const Boundaries<D>& bou
 }
 
 template <int D>
-bool Simulation<D>::Plausible::operator()(const Particles<D>& s, std::int64_t i) const {
+inline bool Simulation<D>::Plausible::operator()(const Particles<D>& s, std::int64_t i) const {
   const double ratio = s.rho[i] / phases[s.phase[i]].rho0;
   bool ok = (ratio >= bandLow) & (ratio <= bandHigh) & (s.h[i] > 0) & (s.h[i] <= huge);
   for (int a = 0; a < D; ++a)
