@@ -72,18 +72,22 @@ std::vector<std::string> Simulation<D>::termNames() const {
 }
 
 template <int D>
-inline void Simulation<D>::Motion::add(const Particles<D>& s, std::int64_t i,
-                                       const Simulation& sim) {
-  hMax = std::max(hMax, s.h[i]);
+inline void Simulation<D>::Motion::add(const Vec<D>& r, double h, std::int64_t i) {
+  hMax = std::max(hMax, h);
   if (listed) {
-    moved2 = std::max(moved2, (s.r[i] - sim.listedAt_[i]).squaredNorm());
-    grown = std::max(grown, s.h[i] - sim.listedH_[i]);
+    moved2 = std::max(moved2, (r - listedAt[i]).squaredNorm());
+    grown = std::max(grown, h - listedH[i]);
   }
 }
 
 template <int D>
 typename Simulation<D>::Motion Simulation<D>::motionStart(std::int64_t n) const {
-  return {0.0, 0.0, 0.0, static_cast<std::int64_t>(listedAt_.size()) == n};
+  return {0.0,
+          0.0,
+          0.0,
+          static_cast<std::int64_t>(listedAt_.size()) == n,
+          listedAt_.data(),
+          listedH_.data()};
 }
 
 template <int D>
@@ -95,7 +99,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   {
     Motion mine = m;
     walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()),
-         [&](std::int64_t i) { mine.add(state, i, *this); });
+         [&](std::int64_t i) { mine.add(state.r[i], state.h[i], i); });
     hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
   }
   m.hMax = hMax, m.moved2 = moved2, m.grown = grown;
@@ -187,33 +191,6 @@ double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
 }
 
 template <int D>
-inline void Simulation<D>::wrapPeriodic(Particles<D>& s, std::int64_t i) const {
-  for (int a = 0; a < D; ++a) {
-    if (bounds_.face[a][0] != FaceKind::periodic) continue;
-    const double lo = bounds_.lower[a], period = bounds_.upper[a] - lo;
-    s.r[i][a] = lo + (s.r[i][a] - lo) - period * std::floor((s.r[i][a] - lo) / period);
-  }
-}
-
-template <int D>
-inline void Simulation<D>::reflectAtWalls(Particles<D>& s, std::int64_t i, long& count,
-                                          double& deepest) const {
-  const double tolerated = 0.5 * scene_.dx;
-  for (int a = 0; a < D; ++a)
-    for (int side = 0; side < 2; ++side) {
-      const FaceKind k = bounds_.face[a][side];
-      if (!Boundaries<D>::isWall(k)) continue;
-      const double wall = side == 0 ? bounds_.lower[a] : bounds_.upper[a];
-      const double depth = side == 0 ? wall - s.r[i][a] : s.r[i][a] - wall;
-      if (depth <= 0 || depth > tolerated) continue;  // deeper: check() reports the failure
-      deepest = std::max(deepest, depth);
-      s.r[i][a] = 2 * wall - s.r[i][a];
-      s.v[i][a] = 2 * bounds_.wallVelocity[a][side][a] - s.v[i][a];
-      ++count;
-    }
-}
-
-template <int D>
 std::optional<Failure> Simulation<D>::checkParticle(const Particles<D>& s, std::size_t i, double t,
                                                     long step) const {
   auto fail = [&](FailureCause cause, const std::string& what) {
@@ -255,34 +232,79 @@ std::optional<Failure> Simulation<D>::checkParticle(const Particles<D>& s, std::
 
 namespace {
 constexpr double huge = std::numeric_limits<double>::max();  // x <= huge: x is not inf or NaN
-}
 
+// What a particle's update needs of the box, by value: read through the Simulation, each of
+// them would be loaded again after every store to a particle (which might have changed it).
 template <int D>
-Simulation<D>::Plausible::Plausible(const Scene& scene, const Boundaries<D>& bounds)
-    : bandLow(scene.densityBand[0]), bandHigh(scene.densityBand[1]), phases(scene.phases.data()) {
-  for (int a = 0; a < D; ++a) {
-    lo[a] = bounds.face[a][0] == FaceKind::periodic ? -huge : bounds.lower[a];
-    hi[a] = bounds.face[a][1] == FaceKind::periodic ? huge : bounds.upper[a];
+struct BoxFaces {
+  double tolerated;  // the deepest crossing of a wall that is reflected (dx / 2)
+  bool periodic[D], wall[D][2];
+  double lo[D], period[D], at[D][2], normalVelocity[D][2];
+  BoxFaces(const Boundaries<D>& b, double dx) : tolerated(0.5 * dx) {
+    for (int a = 0; a < D; ++a) {
+      periodic[a] = b.face[a][0] == FaceKind::periodic;
+      lo[a] = b.lower[a], period[a] = b.upper[a] - b.lower[a];
+      for (int side = 0; side < 2; ++side) {
+        wall[a][side] = Boundaries<D>::isWall(b.face[a][side]);
+        at[a][side] = side == 0 ? b.lower[a] : b.upper[a];
+        normalVelocity[a][side] = b.wallVelocity[a][side][a];
+      }
+    }
   }
-}
+  void wrap(Vec<D>& r) const {
+    for (int a = 0; a < D; ++a)
+      if (periodic[a])
+        r[a] = lo[a] + (r[a] - lo[a]) - period[a] * std::floor((r[a] - lo[a]) / period[a]);
+  }
+  // A particle less than dx/2 beyond a wall is mirrored back (Simulation::wallReflections).
+  void reflect(Vec<D>& r, Vec<D>& v, long& count, double& deepest) const {
+    for (int a = 0; a < D; ++a)
+      for (int side = 0; side < 2; ++side) {
+        if (!wall[a][side]) continue;
+        const double depth = side == 0 ? at[a][side] - r[a] : r[a] - at[a][side];
+        if (depth <= 0 || depth > tolerated) continue;  // deeper: check() reports the failure
+        deepest = std::max(deepest, depth);
+        r[a] = 2 * at[a][side] - r[a];
+        v[a] = 2 * normalVelocity[a][side] - v[a];
+        ++count;
+      }
+  }
+};
 
+// A test without branches that every good particle passes (finite fields, density in its band,
+// inside the box's non-periodic faces); only one that fails it gets checkParticle's, which finds
+// and names the fault.
 template <int D>
-inline bool Simulation<D>::Plausible::operator()(const Particles<D>& s, std::int64_t i) const {
-  const double ratio = s.rho[i] / phases[s.phase[i]].rho0;
-  bool ok = (ratio >= bandLow) & (ratio <= bandHigh) & (s.h[i] > 0) & (s.h[i] <= huge);
-  for (int a = 0; a < D; ++a)
-    ok &= (s.r[i][a] >= lo[a]) & (s.r[i][a] <= hi[a]) & (s.v[i][a] >= -huge) & (s.v[i][a] <= huge);
-  return ok;
-}
+struct Plausible {
+  double lo[D], hi[D], bandLow, bandHigh;
+  const Phase* phases;
+  Plausible(const Scene& scene, const Boundaries<D>& bounds)
+      : bandLow(scene.densityBand[0]), bandHigh(scene.densityBand[1]), phases(scene.phases.data()) {
+    for (int a = 0; a < D; ++a) {
+      lo[a] = bounds.face[a][0] == FaceKind::periodic ? -huge : bounds.lower[a];
+      hi[a] = bounds.face[a][1] == FaceKind::periodic ? huge : bounds.upper[a];
+    }
+  }
+  bool operator()(const Vec<D>& r, const Vec<D>& v, double rho, double h, int phase) const {
+    const double ratio = rho / phases[phase].rho0;
+    bool ok = (ratio >= bandLow) & (ratio <= bandHigh) & (h > 0) & (h <= huge);
+    for (int a = 0; a < D; ++a)
+      ok &= (r[a] >= lo[a]) & (r[a] <= hi[a]) & (v[a] >= -huge) & (v[a] <= huge);
+    return ok;
+  }
+};
+}  // namespace
 
 template <int D>
 std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, long step) const {
   const std::int64_t n = static_cast<std::int64_t>(s.size());
-  const Plausible plausible(scene_, bounds_);
+  const Plausible<D> plausible(scene_, bounds_);
   std::int64_t first = n;
 #pragma omp parallel if (n >= parallelFrom()) reduction(min : first)
   walk(shareOf(n, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
-    if (!plausible(s, i) && i < first && checkParticle(s, i, t, step)) first = i;
+    if (!plausible(s.r[i], s.v[i], s.rho[i], s.h[i], s.phase[i]) && i < first &&
+        checkParticle(s, i, t, step))
+      first = i;
   });
   return failureFrom(s, first, t, step);
 }
@@ -335,30 +357,50 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   yStar_.resize(n);
   const std::int64_t count = static_cast<std::int64_t>(n);
   const bool parallel = count >= parallelFrom();
+  const BoxFaces<D> box(bounds_, scene_.dx);
+  // Through pointers held in the loops (see BoxFaces).
+  const Vec<D>* r = y_.r.data();
+  const Vec<D>* v = y_.v.data();
+  const Vec<D>* a = f_.dvdt.data();
+  const double *rho = y_.rho.data(), *h = y_.h.data(), *m = y_.m.data();
+  const double *drho = f_.drhodt.data(), *dh = f_.dhdt.data();
+  const int* phase = y_.phase.data();
+  Vec<D>* rS = yStar_.r.data();
+  Vec<D>* vS = yStar_.v.data();
+  double *rhoS = yStar_.rho.data(), *hS = yStar_.h.data(), *mS = yStar_.m.data(),
+         *pS = yStar_.p.data();
+  int* phaseS = yStar_.phase.data();
   Motion motion = motionStart(count);
   {
     double hMax = 0, moved2 = 0, grown = 0;
 #pragma omp parallel if (parallel) reduction(max : hMax, moved2, grown)
     {
       Motion mine = motion;
-      walk(shareOf(count, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
-        yStar_.r[i] = y_.r[i] + dt * y_.v[i];
-        yStar_.v[i] = y_.v[i] + dt * f_.dvdt[i];
-        yStar_.rho[i] = y_.rho[i] + dt * f_.drhodt[i];
-        yStar_.h[i] = y_.h[i] + dt * f_.dhdt[i];
-        yStar_.m[i] = y_.m[i], yStar_.phase[i] = y_.phase[i];
-        wrapPeriodic(yStar_, i);
-        mine.add(yStar_, i, *this);
-      });
+      walk(shareOf(count, omp_get_thread_num(), omp_get_num_threads()),
+           [&mine, box, dt, r, v, a, rho, h, m, drho, dh, phase, rS, vS, rhoS, hS, mS,
+            phaseS](std::int64_t i) {
+             rS[i] = r[i] + dt * v[i];
+             vS[i] = v[i] + dt * a[i];
+             rhoS[i] = rho[i] + dt * drho[i];
+             hS[i] = h[i] + dt * dh[i];
+             mS[i] = m[i], phaseS[i] = phase[i];
+             box.wrap(rS[i]);
+             mine.add(rS[i], hS[i], i);
+           });
       hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
     }
     motion.hMax = hMax, motion.moved2 = moved2, motion.grown = grown;
   }
   rates(yStar_, t_ + dt, fStar_, motion);
+  const Vec<D>* aStar = fStar_.dvdt.data();  // (sized by the evaluation)
+  const double *drhoStar = fStar_.drhodt.data(), *dhStar = fStar_.dhdt.data();
   // Corrector: the trapezoidal rule over the two rates. Positions first: they need v*. A custom
   // reflection moves particles after this loop: the checks and the motion then wait for it.
+  // The body is inlined into the loop (GCC called it for each particle, whose EOS, a division and
+  // four multiplications in a chain, then could not overlap the next particle's), and the arrays'
+  // pointers are copied into it: captured by reference, each was loaded again after every store.
   const bool ownReflection = static_cast<bool>(reflection_);
-  const Plausible plausible(scene_, bounds_);
+  const Plausible<D> plausible(scene_, bounds_);
   const Phase* phases = scene_.phases.data();
   motion = motionStart(count);
   {
@@ -371,18 +413,24 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
     reduction(max : deepest, hMax, moved2, grown) reduction(min : first)
     {
       Motion mine = motion;
-      walk(shareOf(count, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
-        yStar_.r[i] = y_.r[i] + 0.5 * dt * (y_.v[i] + yStar_.v[i]);
-        yStar_.v[i] = y_.v[i] + 0.5 * dt * (f_.dvdt[i] + fStar_.dvdt[i]);
-        yStar_.rho[i] = y_.rho[i] + 0.5 * dt * (f_.drhodt[i] + fStar_.drhodt[i]);
-        yStar_.p[i] = TaitEquationOfState::pressure(yStar_.rho[i], phases[yStar_.phase[i]]);
-        yStar_.h[i] = y_.h[i] + 0.5 * dt * (f_.dhdt[i] + fStar_.dhdt[i]);
-        wrapPeriodic(yStar_, i);
-        reflectAtWalls(yStar_, i, reflected, deepest);
-        if (ownReflection) return;
-        if (!plausible(yStar_, i) && i < first && checkParticle(yStar_, i, t, step)) first = i;
-        mine.add(yStar_, i, *this);
-      });
+      walk(
+          shareOf(count, omp_get_thread_num(), omp_get_num_threads()),
+          [&mine, &reflected, &deepest, &first, this, box, plausible, phases, ownReflection, t, step,
+           dt, r, v, a, aStar, rho, h, drho, dh, drhoStar, dhStar, rS, vS, rhoS, hS, pS,
+           phaseS](std::int64_t i) __attribute__((always_inline)) {
+            rS[i] = r[i] + 0.5 * dt * (v[i] + vS[i]);
+            vS[i] = v[i] + 0.5 * dt * (a[i] + aStar[i]);
+            rhoS[i] = rho[i] + 0.5 * dt * (drho[i] + drhoStar[i]);
+            pS[i] = TaitEquationOfState::pressure(rhoS[i], phases[phaseS[i]]);
+            hS[i] = h[i] + 0.5 * dt * (dh[i] + dhStar[i]);
+            box.wrap(rS[i]);
+            box.reflect(rS[i], vS[i], reflected, deepest);
+            if (ownReflection) return;
+            if (!plausible(rS[i], vS[i], rhoS[i], hS[i], phaseS[i]) && i < first &&
+                checkParticle(yStar_, i, t, step))
+              first = i;
+            mine.add(rS[i], hS[i], i);
+          });
       hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
     }
     reflections_ += reflected, reflectionDepth_ = deepest;

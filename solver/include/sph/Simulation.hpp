@@ -100,23 +100,15 @@ class Simulation {
                                      long step) const;
   std::optional<Failure> checkParticle(const Particles<D>& s, std::size_t i, double t,
                                        long step) const;
-  // A test without branches that every good particle passes (finite fields, density in its
-  // band, inside the box's non-periodic faces); only one that fails it gets checkParticle's.
-  struct Plausible {
-    double lo[D], hi[D], bandLow, bandHigh;
-    const Phase* phases;
-    Plausible(const Scene& scene, const Boundaries<D>& bounds);
-    bool operator()(const Particles<D>& s, std::int64_t i) const;
-  };
-  void wrapPeriodic(Particles<D>& s, std::int64_t i) const;
-  void reflectAtWalls(Particles<D>& s, std::int64_t i, long& count, double& deepest) const;
   void storeInCellOrder();
   // How far the particles moved, and h grew, since the neighbour lists were built (if `listed`),
   // and the largest h: whether rates() keeps the lists. Gathered in the loop that wrote the state.
   struct Motion {
     double hMax, moved2, grown;
     bool listed;
-    void add(const Particles<D>& s, std::int64_t i, const Simulation& sim);
+    const Vec<D>* listedAt;
+    const double* listedH;
+    void add(const Vec<D>& r, double h, std::int64_t i);
   };
   Motion motionStart(std::int64_t n) const;
   void rates(const Particles<D>& state, double t, Derivatives<D>& out, const Motion& motion);
