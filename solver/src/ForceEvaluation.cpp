@@ -324,30 +324,46 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     const int mineBegin = first <= last ? bandBegin(first) : 0;
     const int mineEnd = first <= last ? bandBegin(last + 1) : 0;
     const Share mine{mineBegin, mineEnd};  // walked so that the prefetcher stays inside (walk())
-    walk(mine, [&](std::int64_t k) {
-      const int s = order[k];
-      // Pass 1 reads x and h by field; the rest is read from the records in 1-D and 2-D (v, rho,
-      // p/rho^2, m by field only in 3-D), and with reused lists, which skip pass 1, everything.
-      const double rho = set.rho[s], rhoInv = 1.0 / rho, m = set.m[s], h = set.h[s];
-      const double pr = set.p[s] * rhoInv * rhoInv;
-      if (D > 2 || !reuse) {
-        for (int a = 0; a < D; ++a) w.x[a][k] = set.x[s][a];
-        w.h[k] = h, w.receives[k] = s < nFluid ? -1 : 0;
-      }
-      double* e = w.extra + extraSize * k;
-      e[0] = set.mu[s], e[1] = rhoInv;
-      double* rate = w.rate + rateWidth * k;
-      for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
-      if constexpr (D <= 2) {
-        double* r = w.record + recordSize * k;
-        r[0] = set.x[s][0], r[1] = D > 1 ? set.x[s][D - 1] : 0.0;
-        r[2] = set.v[s][0], r[3] = D > 1 ? set.v[s][D - 1] : 0.0;
-        r[4] = h, r[5] = rho, r[6] = pr, r[7] = m;
-      } else {
-        for (int a = 0; a < D; ++a) w.v[a][k] = set.v[s][a];
-        w.rho[k] = rho, w.m[k] = m, w.pOverRho2[k] = pr;
-      }
-    });
+    {
+      // Through pointers copied into the loop: a store through one of them might change the
+      // vectors' own data pointers as far as the compiler knows, so that it loads them again.
+      const int* sorted = order.data();
+      const Vec<D>* sx = set.x.data();
+      const Vec<D>* sv = set.v.data();
+      const double *sRho = set.rho.data(), *sM = set.m.data(), *sH = set.h.data(),
+                   *sP = set.p.data(), *sMu = set.mu.data();
+      std::array<double*, D> wx, wv;
+      for (int a = 0; a < D; ++a) wx[a] = w.x[a].data(), wv[a] = w.v[a].data();
+      double *wh = w.h.data(), *wRho = w.rho.data(), *wM = w.m.data(), *wPr = w.pOverRho2.data();
+      std::int64_t* wReceives = w.receives.data();
+      double *records = w.record, *extras = w.extra, *rates = w.rate;
+      const bool fields = D > 2 || !reuse;
+      walk(mine, [=](std::int64_t k) {
+        const int s = sorted[k];
+        // Pass 1 reads x and h by field; the rest is read from the records in 1-D and 2-D (v,
+        // rho, p/rho^2, m by field only in 3-D), and with reused lists, which skip pass 1,
+        // everything.
+        const double rho = sRho[s], rhoInv = 1.0 / rho, m = sM[s], h = sH[s];
+        const double pr = sP[s] * rhoInv * rhoInv;
+        if (fields) {
+          for (int a = 0; a < D; ++a) wx[a][k] = sx[s][a];
+          wh[k] = h, wReceives[k] = s < nFluid ? -1 : 0;
+        }
+        double* e = extras + extraSize * k;
+        e[0] = sMu[s], e[1] = rhoInv;
+        double* rate = rates + rateWidth * k;
+        for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
+        if constexpr (D <= 2) {
+          double* r = records + recordSize * k;
+          r[0] = sx[s][0], r[1] = D > 1 ? sx[s][D - 1] : 0.0;
+          r[2] = sv[s][0], r[3] = D > 1 ? sv[s][D - 1] : 0.0;
+          r[4] = h, r[5] = rho, r[6] = pr, r[7] = m;
+        } else {
+          for (int a = 0; a < D; ++a) wv[a][k] = sv[s][a];
+          wRho[k] = rho, wM[k] = m, wPr[k] = pr;
+        }
+      });
+    }
     const double* xs[3] = {};  // three components whatever D, for the pair loop's r_ij, v_ij
     const double* vs[3] = {};
     for (int a = 0; a < D; ++a) xs[a] = w.x[a].data(), vs[a] = w.v[a].data();
@@ -597,15 +613,22 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       runBand(b);
     }
 #pragma omp barrier
-    walk(mine, [&](std::int64_t k) {
-      const int dst = order[k];
-      if (dst >= nFluid) return;
-      const double* rate = w.rate + rateWidth * k;
-      out.drhodt[dst] = rate[0];
-      const double h = D <= 2 ? w.record[recordSize * k + 4] : hs[k];
-      out.dhdt[dst] = VariableH ? h / D * rate[1] : 0.0;
-      for (int a = 0; a < D; ++a) out.dvdt[dst][a] = rate[2 + a] + g[a];
-    });
+    {
+      const int* sorted = order.data();
+      const double *rates = w.rate, *records = w.record;
+      double *dRho = out.drhodt.data(), *dH = out.dhdt.data();
+      Vec<D>* dV = out.dvdt.data();
+      const Vec<D> gravity = g;
+      walk(mine, [=](std::int64_t k) {
+        const int dst = sorted[k];
+        if (dst >= nFluid) return;
+        const double* rate = rates + rateWidth * k;
+        dRho[dst] = rate[0];
+        const double h = D <= 2 ? records[recordSize * k + 4] : hs[k];
+        dH[dst] = VariableH ? h / D * rate[1] : 0.0;
+        for (int a = 0; a < D; ++a) dV[dst][a] = rate[2 + a] + gravity[a];
+      });
+    }
   }
   std::swap(w.bandCost, w.bandWork);
 }
