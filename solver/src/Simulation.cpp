@@ -297,6 +297,7 @@ struct Plausible {
 
 template <int D>
 std::optional<Failure> Simulation<D>::check(const Particles<D>& s, double t, long step) const {
+  // The first bad particle by index, whatever the thread count (a min over the shares).
   const std::int64_t n = static_cast<std::int64_t>(s.size());
   const Plausible<D> plausible(scene_, bounds_);
   std::int64_t first = n;
