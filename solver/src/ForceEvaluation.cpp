@@ -248,8 +248,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   double& hMax = w.hMax;
   if (!reuse) {
     hMax = 0.0;
-    // Split as the interaction set's build splits it (the fluid evenly, the halo to the last
-    // thread), so that each thread reads the entries it wrote.
+    // The fluid split as the interaction set's build splits it, so that each thread reads the
+    // fluid entries it wrote; the halo (whose runs the build gives to the threads that wrote
+    // their sources) to the last thread, at the builds only.
     const std::int64_t nFluidEntries = static_cast<std::int64_t>(set.nFluid);
 #pragma omp parallel if (nSorted >= parallelFrom()) reduction(max : hMax)
     walk(shareOf(nSorted, nFluidEntries, omp_get_thread_num(), omp_get_num_threads()),

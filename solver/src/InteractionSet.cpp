@@ -23,8 +23,9 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   // One team for the fluid copy and every axis's halo (a team costs 0.6 us or more to
   // gather on the 2-core machine; the whole set about 10 us at 1,700 entries on one thread). Each
   // thread copies a contiguous share of the fluid and, per axis, lists the entries within reach of
-  // a face in its share of the entries so far; the images are then written after those entries,
-  // each thread's at its list's offset, so the order is the serial one whatever the thread count.
+  // a face among the entries it wrote (its runs, below); the images are then written after all
+  // the entries so far, each run's at its offset, so the order is the serial one whatever the
+  // thread count.
   const int threads = count >= parallelFrom() ? omp_get_max_threads() : 1;
   if (static_cast<int>(set.nearFace.size()) < threads) set.nearFace.resize(threads);
 #pragma omp parallel num_threads(threads) if (threads > 1)
