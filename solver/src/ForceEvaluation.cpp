@@ -223,6 +223,23 @@ inline PairInverses pairInverses(Vd r2, Vd a, Vd b, Vd c) {
 #endif
 }
 
+// The pair loop's threads take the bands, of two layers of cells each, in runs of about equal
+// cost: a band goes to the thread in whose share of the cost its middle falls. Returns thread u's
+// first band (nBands for u = nt); thread u takes firstBand(u) .. firstBand(u + 1) - 1.
+constexpr int bandLayers = 2;
+template <class Cost>
+int firstBand(int u, int nt, int nBands, const Cost& cost) {
+  double all = 0.0, before = 0.0;
+  for (int b = 0; b < nBands; ++b) all += cost(b);
+  for (int b = 0; b < nBands; ++b) {
+    const double mid = before + 0.5 * cost(b);
+    before += cost(b);
+    const int owner = all > 0 ? std::min(nt - 1, static_cast<int>(nt * mid / all)) : 0;
+    if (owner >= u) return b;
+  }
+  return nBands;
+}
+
 // Grows `store` to hold n doubles and returns its data (on a cache line: LineVector).
 double* grown(LineVector<double>& store, std::size_t n) {
   store.resize(n);
@@ -255,9 +272,18 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
 #pragma omp parallel if (nSorted >= parallelFrom()) reduction(max : hMax)
     walk(shareOf(nSorted, nFluidEntries, omp_get_thread_num(), omp_get_num_threads()),
          [&](std::int64_t k) { hMax = std::max(hMax, set.h[k]); });
+    // Each thread sorts the entries of the layers its bands will hold (as cut by the last
+    // evaluation's work where the bands stay as many; else evenly by layers), so that it reads
+    // its part of the sorted order from its own cache.
+    auto cut = [&](int layers, int nt, int u) {
+      const int bands = (layers + bandLayers - 1) / bandLayers;
+      if (static_cast<int>(w.bandCost.size()) != bands) return layers * u / nt;
+      return std::min(layers, bandLayers * firstBand(u, nt, bands,
+                                                     [&](int b) { return double(w.bandCost[b]); }));
+    };
     w.cells.build(
         n, [&](std::size_t i, int a) { return set.x[i][a]; },
-        0.5 * (Kernel::support * hMax + lists.skin), 4 << D, set.nFluid);
+        0.5 * (Kernel::support * hMax + lists.skin), 4 << D, set.nFluid, cut);
     w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
   }
   const auto& order = w.cells.order();
@@ -291,7 +317,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     w.scratch.resize(omp_get_max_threads());
   // Bands of two layers of cells: a point's forward neighbours lie in its own band and the next,
   // so the even bands can run at the same time, then the odd ones.
-  constexpr int reach = 2;
+  constexpr int reach = bandLayers;
   const int nBands = (w.cells.layers() + reach - 1) / reach;
   if (!reuse && static_cast<int>(w.bandLists.size()) < nBands) w.bandLists.resize(nBands);
 
@@ -313,15 +339,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // the entries of its bands: those it reads and writes most, so that they rarely move between
     // cores. Which thread runs a band does not change any sum (see above).
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-    double all = 0.0, before = 0.0;
-    for (int b = 0; b < nBands; ++b) all += cost(b);
-    int first = nBands, last = -1;
-    for (int b = 0; b < nBands; ++b) {
-      const double mid = before + 0.5 * cost(b);
-      before += cost(b);
-      const int owner = all > 0 ? std::min(nt - 1, static_cast<int>(nt * mid / all)) : 0;
-      if (owner == t) first = std::min(first, b), last = b;
-    }
+    const int first = firstBand(t, nt, nBands, cost), last = firstBand(t + 1, nt, nBands, cost) - 1;
     const int mineBegin = first <= last ? bandBegin(first) : 0;
     const int mineEnd = first <= last ? bandBegin(last + 1) : 0;
     const Share mine{mineBegin, mineEnd};  // walked so that the prefetcher stays inside (walk())
@@ -603,7 +621,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     };
     const int firstEven = first + first % 2, lastEven = last - last % 2;
 #pragma omp barrier
-    if (first <= last && firstEven <= lastEven) {  // (a thread without bands has last = -1)
+    if (first <= last && firstEven <= lastEven) {  // (a thread without bands has first > last)
       runBand(firstEven), evenDone.done(firstEven);
       if (lastEven > firstEven) runBand(lastEven), evenDone.done(lastEven);
       for (int b = firstEven + 2; b < lastEven; b += 2) runBand(b), evenDone.done(b);

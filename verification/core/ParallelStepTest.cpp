@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cstring>
+#include <functional>
 #include <random>
 
 #include "sph/CellList.hpp"
@@ -37,6 +38,39 @@ TEST(ParallelCellList, OrderIsTheSerialOne) {
     const auto c0 = two.sortedCell(k - 1), c1 = two.sortedCell(k);
     ASSERT_TRUE(c0 < c1 || (c0 == c1 && two.order()[k - 1] < two.order()[k])) << k;
   }
+}
+
+// The threads sort the points of the layers a cut gives them (a pair loop's bands): no cut changes
+// the order or the cells' starts, also one that gives a thread no layer or does not ascend.
+TEST(ParallelCellList, OrderDoesNotDependOnTheCut) {
+  const int n = 5 * static_cast<int>(sph::parallelFrom());
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<sph::Vec<2>> x(n);
+  for (auto& p : x) p = {u(rng), 0.3 * u(rng)};  // x the slowest axis: layers along x
+  auto pos = [&](std::size_t i, int a) { return x[i][a]; };
+  const int saved = omp_get_max_threads();
+  sph::CellList<2> one;
+  omp_set_num_threads(1);
+  one.build(x.size(), pos, 0.01, 4, n - 100);  // the last 100 points as a halo
+  omp_set_num_threads(2);
+  const std::vector<std::function<int(int, int, int)>> cuts = {
+      [](int layers, int, int) { return layers; },                        // all to thread 0
+      [](int, int, int) { return 0; },                                    // all to thread 1
+      [](int, int, int) { return 3; },                                    // near the start
+      [](int layers, int nt, int t) { return layers - layers * t / nt; }  // descending
+  };
+  for (const auto& cut : cuts) {
+    sph::CellList<2> two;
+    two.build(x.size(), pos, 0.01, 4, n - 100, cut);
+    EXPECT_TRUE(sameBits(one.order(), two.order()));
+    ASSERT_EQ(one.cells(), two.cells());
+    for (std::int64_t c = 0; c < one.cells(); ++c) {
+      ASSERT_EQ(one.cellBegin(c), two.cellBegin(c)) << c;
+      ASSERT_EQ(one.cellEnd(c), two.cellEnd(c)) << c;
+    }
+  }
+  omp_set_num_threads(saved);
 }
 
 // A dam break of 100 x 100 particles (above parallelFrom() for either wait policy).

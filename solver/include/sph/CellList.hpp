@@ -37,11 +37,21 @@ class CellList {
 
   // The same, for points given by an accessor pos(i, axis); the arrays are reused between builds
   // (no allocation once they have grown to the largest n seen).
-  // `cellsPerPoint` bounds the grid's size (cells are doubled until it holds). The threads split
-  // the points as shareOf(n, leading, ...) does (Parallel.hpp; leading = n: evenly).
-  template <class Pos>
+  // `cellsPerPoint` bounds the grid's size (cells are doubled until it holds). The threads bin
+  // the points as shareOf(n, leading, ...) splits them (Parallel.hpp; leading = n: evenly), and
+  // sort those of whole layers (below): thread t those of layers cut(layers, nt, t) ..
+  // cut(layers, nt, t + 1) - 1, where cut(layers, nt, 0) = 0, cut(layers, nt, nt) = layers, and
+  // cut ascends in t (EvenLayers by default). A pair loop that hands the layers to its threads
+  // so gets the sorted order of its layers written by the thread that reads it. The order does
+  // not depend on the cut or the thread count.
+  struct EvenLayers {
+    int operator()(int layers, int nt, int t) const {
+      return static_cast<int>(std::int64_t{layers} * t / nt);
+    }
+  };
+  template <class Pos, class Cut = EvenLayers>
   void build(std::size_t n, Pos&& pos, double cellSize, int cellsPerPoint = 4,
-             std::size_t leading = ~std::size_t{0}) {
+             std::size_t leading = ~std::size_t{0}, Cut&& cut = {}) {
     const std::int64_t count = static_cast<std::int64_t>(n);
     const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
     const bool parallel = count >= parallelFrom();
@@ -76,83 +86,113 @@ class CellList {
       size_ *= 2.0;
     }
     inverse_ = 1.0 / size_;
-    std::int64_t total = 1;
-    for (int a = 0; a < D; ++a) total *= dims_[a];
-    cellOf_.resize(n);
+    std::int64_t perLayer = 1;
+    for (int a = 0; a + 1 < D; ++a) perLayer *= dims_[a];
+    const std::int64_t total = perLayer * dims_[D - 1];
     order_.resize(n);
     sortedCell_.resize(n);
-    // A counting sort by cell, stable (points of a cell in increasing index): each thread counts
-    // and places a fixed, contiguous share of the points, and thread t's points of a cell go after
-    // those of threads 0 .. t-1, so the order is the serial one whatever the thread count.
-    const int threads = parallel ? omp_get_max_threads() : 1;
-    counts_.resize(static_cast<std::size_t>(threads) * (total + 1));
     start_.resize(total + 1);
+    // A counting sort by cell, stable (points of a cell in increasing index). Each thread bins its
+    // share of the points into one bucket for each thread (the one whose layers hold the point's
+    // cell), then counts and places the points of the buckets for it: thread 0's, then thread
+    // 1's, ..., each in increasing index, so the order is the serial one whatever the thread
+    // count and the cut. A thread so writes the sorted order of its own layers only. (Each thread
+    // placed its own share before: the last thread, which bins the halo of an interaction set,
+    // wrote into the other's layers at every wall, and each thread summed and numbered the
+    // other's counts of its cells. The block of makeBlock (perf/Workload.hpp), two threads, best
+    // of 4 alternated runs of each: 1e3 points 6.53 -> 6.14 us, 1e4 38.8 -> 36.6, 1e5 352 -> 320,
+    // 1e6 3,771 -> 3,393 us; one thread 7.81 -> 8.14, 60.0 -> 63.6, 637 -> 622, 6,937 -> 6,739
+    // us. The whole force evaluation at 1e3 with lists built, two threads on cores that do not
+    // share a cache, 99.7-101 -> 90.4-93.0 us.)
+    // start_[c + 1] counts cell c's points, then holds its next place, and so ends as the start
+    // of cell c + 1.
+    const int threads = parallel ? std::min(omp_get_max_threads(), maxThreads) : 1;
+    if (static_cast<int>(buckets_.size()) < threads * threads) buckets_.resize(threads * threads);
     blockSum_.resize(static_cast<std::size_t>(threads) * 16);
 #pragma omp parallel num_threads(threads) if (parallel)
     {
       const int t = omp_get_thread_num(), nt = omp_get_num_threads();
       const auto [begin, end] = shareOf(count, lead, t, nt);
-      int* mine = counts_.data() + static_cast<std::size_t>(t) * (total + 1);
-      std::fill(mine, mine + total + 1, 0);  // each thread its own counts
-      // Points in cell order (as Simulation::keepCellOrder stores them) come in runs of one
-      // cell: counted in a register, not by incrementing one memory cell again and again.
-      std::int64_t run = -1;
-      int inRun = 0;
+      std::array<std::int64_t, maxThreads + 1> firstCell{};  // thread u's: firstCell[u] .. [u + 1]
+      const int layers = dims_[D - 1];
+      for (int u = 1; u < nt; ++u)  // (ascending whatever `cut` returns)
+        firstCell[u] =
+            std::max(firstCell[u - 1], std::clamp(cut(layers, nt, u), 0, layers) * perLayer);
+      firstCell[nt] = total;
+      std::uint64_t* into[maxThreads];  // where the next point for thread u's bucket goes
+      for (int u = 0; u < nt; ++u) {
+        Bucket& bucket = buckets_[t * nt + u];
+        if (static_cast<std::int64_t>(bucket.points.size()) < end - begin)
+          bucket.points.resize(end - begin);
+        into[u] = bucket.points.data();
+      }
+      // Bin: point i of cell c as c 2^32 + i into the bucket of the thread whose cells hold c,
+      // and counted at once if they are this thread's own (the others' after the barrier).
+      const std::int64_t c0 = firstCell[t], c1 = firstCell[t + 1];
+      int* next = start_.data() + 1;  // next[c]: cell c's count, then its next place
+      std::fill(next + c0, next + c1, 0);
+      if (t == 0) start_[0] = 0;
+      int to = t;
+      std::uint64_t* out = into[to];  // into[to], in a register while `to` stays
       for (std::int64_t i = begin; i < end; ++i) {
         std::int64_t idx = 0, stride = 1;
         for (int a = 0; a < D; ++a) {
           idx += bin(pos(i, axis_[a]), a) * stride;
           stride *= dims_[a];
         }
-        cellOf_[i] = idx;
-        if (idx == run) {
-          ++inRun;
-          continue;
+        if (idx < firstCell[to] || idx >= firstCell[to + 1]) {  // the points come near one another
+          into[to] = out;
+          while (idx >= firstCell[to + 1]) ++to;
+          while (idx < firstCell[to]) --to;
+          out = into[to];
         }
-        if (run >= 0) mine[run] += inRun;
-        run = idx, inRun = 1;
+        *out++ = static_cast<std::uint64_t>(idx) << 32 | static_cast<std::uint64_t>(i);
+        if (to == t) ++next[idx];
       }
-      if (run >= 0) mine[run] += inRun;
-#pragma omp barrier
-      // Cell c's points start after all points of cells < c; thread t's after threads < t's. The
-      // cells in nt blocks, one a thread: each thread sums its block's counts, then numbers its
-      // block's points from the sum of the blocks before it (the grid has about as many cells as
-      // points, so a serial sum over it would not scale: 1e6 points on two threads, the build
-      // 2.84-3.00 ms with one serial sum, 2.68-2.87 ms so).
-      const std::int64_t c0 = total * t / nt, c1 = total * (t + 1) / nt;
+      into[to] = out;
+      for (int u = 0; u < nt; ++u)
+        buckets_[t * nt + u].filled = into[u] - buckets_[t * nt + u].points.data();
+      // Cell c's points start after all points of cells < c: after the own cells' before it and
+      // the points of the threads before (the grid has about as many cells as points, so a serial
+      // sum over it would not scale: 1e6 points on two threads, the build 2.84-3.00 ms with one
+      // serial sum, 2.68-2.87 ms so).
       int running = 0;
       if (nt > 1) {
+#pragma omp barrier
+        for (int u = 0; u < nt; ++u) {
+          if (u == t) continue;
+          const Bucket& bucket = buckets_[u * nt + t];
+          for (std::int64_t k = 0; k < bucket.filled; ++k) ++next[bucket.points[k] >> 32];
+        }
         int sum = 0;
-        for (std::int64_t c = c0; c < c1; ++c)
-          for (int u = 0; u < nt; ++u)
-            sum += counts_[static_cast<std::size_t>(u) * (total + 1) + c];
+        for (std::int64_t c = c0; c < c1; ++c) sum += next[c];
         blockSum_[16 * t] = sum;  // a cache line a thread
 #pragma omp barrier
         for (int u = 0; u < t; ++u) running += blockSum_[16 * u];
       }
       for (std::int64_t c = c0; c < c1; ++c) {
-        start_[c] = running;
-        for (int u = 0; u < nt; ++u) {
-          int& k = counts_[static_cast<std::size_t>(u) * (total + 1) + c];
-          const int here = k;
-          k = running, running += here;
+        const int here = next[c];
+        next[c] = running, running += here;
+      }
+      // Place. Points in cell order (as Simulation::keepCellOrder stores them) come in runs of
+      // one cell: the next place kept in a register along a run.
+      std::int64_t run = -1;
+      int place = 0;
+      for (int u = 0; u < nt; ++u) {
+        const Bucket& bucket = buckets_[u * nt + t];
+        for (std::int64_t k = 0; k < bucket.filled; ++k) {
+          const std::uint64_t point = bucket.points[k];
+          const std::int64_t c = static_cast<std::int64_t>(point >> 32);
+          if (c != run) {
+            if (run >= 0) next[run] = place;
+            run = c, place = next[c];
+          }
+          order_[place] = static_cast<int>(point & 0xffffffffu);
+          sortedCell_[place] = c;
+          ++place;
         }
       }
-      if (t == nt - 1) start_[total] = running;
-#pragma omp barrier
-      int k = 0;  // the next place in cell `run`
-      run = -1;
-      for (std::int64_t i = begin; i < end; ++i) {
-        const std::int64_t c = cellOf_[i];
-        if (c != run) {
-          if (run >= 0) mine[run] = k;
-          run = c, k = mine[c];
-        }
-        order_[k] = static_cast<int>(i);
-        sortedCell_[k] = c;
-        ++k;
-      }
-      if (run >= 0) mine[run] = k;
+      if (run >= 0) next[run] = place;
     }
   }
 
@@ -304,8 +344,14 @@ class CellList {
   Vec<D> lo_ = Vec<D>::Zero();  // lo_, dims_: by numbering axis
   double size_ = 1.0, inverse_ = 1.0;
   std::array<int, D> dims_{};
-  LineVector<int> start_, order_, counts_, blockSum_;
-  LineVector<std::int64_t> cellOf_, sortedCell_;
+  LineVector<int> start_, order_, blockSum_;
+  LineVector<std::int64_t> sortedCell_;
+  static constexpr int maxThreads = 64;  // the sort's team at most
+  struct alignas(64) Bucket {            // one thread's points for one thread's cells (build)
+    LineVector<std::uint64_t> points;
+    std::int64_t filled = 0;
+  };
+  std::vector<Bucket> buckets_;
 };
 
 }  // namespace sph
