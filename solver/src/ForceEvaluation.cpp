@@ -170,9 +170,13 @@ struct ForceEvaluation<D>::Workspace {
   std::size_t listed = 0;
   // The work of each band of two cell layers, in this evaluation (bandWork, written by the band's
   // thread) and in the last (bandCost), by which the threads' shares are cut: the candidates
-  // pass 1 tests plus 3 per neighbour pass 2 takes (a dam break at dx 0.01, one thread: 1.9 ns
-  // a candidate, 6.1 ns a neighbour, fitted to the bands' times; within 25 % of each band's time
-  // where it took more than 5 us). Counted, not timed: the cut is the same in every run.
+  // pass 1 tests, 5 per neighbour pass 2 takes and 22 per particle (its rows, its sums). Fitted
+  // to the bands' times on one thread, lists built and kept: the dam break at dx 0.01 after 500
+  // and 5,000 steps, and makeBlock (perf/Workload.hpp) at 1e3 and 1e4 particles, 0.5-1.1 ns a
+  // candidate, 4.8-5.9 ns a neighbour, 10-41 ns a particle. The bands' times differ from the
+  // counts (scaled) by 2.1-6.4 % rms; from the candidates plus 3 per neighbour alone, as before,
+  // by 2.9-10 % (the last band of the block at 1e3, the free surface's, by 35 %). Counted, not
+  // timed: the cut is the same in every run.
   LineVector<std::int64_t> bandCost, bandWork;
   BandSignals evenDone;  // the even bands this evaluation has finished
   double hMax = 0.0;     // the largest h at the last build
@@ -495,7 +499,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
             used += (count + lanes - 1) / lanes * lanes;
           }
         }
-        work += 3 * count;
+        work += 5 * count + 22;
 
         // Pass 2: the terms, one vector of neighbours at a time.
         for (int k = 0; k < count; k += lanes) {
