@@ -269,13 +269,26 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   double& hMax = w.hMax;
   if (!reuse) {
     hMax = 0.0;
-    // The fluid split as the interaction set's build splits it, so that each thread reads the
-    // fluid entries it wrote; the halo (whose runs the build gives to the threads that wrote
-    // their sources) to the last thread, at the builds only.
+    // h_max and the entries' box (for the cell list) in one pass. The fluid split as the
+    // interaction set's build splits it, so that each thread reads the fluid entries it wrote;
+    // the halo (whose runs the build gives to the threads that wrote their sources) to the last
+    // thread, at the builds only.
     const std::int64_t nFluidEntries = static_cast<std::int64_t>(set.nFluid);
-#pragma omp parallel if (nSorted >= parallelFrom()) reduction(max : hMax)
+    typename CellList<D>::Box box;
+    double lo[D], hi[D];
+    for (int a = 0; a < D; ++a) lo[a] = box.lo[a], hi[a] = box.hi[a];
+#pragma omp parallel if (nSorted >= parallelFrom()) reduction(max                         \
+                                                              : hMax) reduction(min       \
+                                                                                : lo[:D]) \
+    reduction(max                                                                         \
+              : hi[:D])
     walk(shareOf(nSorted, nFluidEntries, omp_get_thread_num(), omp_get_num_threads()),
-         [&](std::int64_t k) { hMax = std::max(hMax, set.h[k]); });
+         [&](std::int64_t k) {
+           hMax = std::max(hMax, set.h[k]);
+           for (int a = 0; a < D; ++a)
+             lo[a] = std::min(lo[a], set.x[k][a]), hi[a] = std::max(hi[a], set.x[k][a]);
+         });
+    for (int a = 0; a < D; ++a) box.lo[a] = lo[a], box.hi[a] = hi[a];
     // Each thread sorts the entries of the layers its bands will hold (as cut by the last
     // evaluation's work where the bands stay as many; else evenly by layers), so that it reads
     // its part of the sorted order from its own cache.
@@ -286,7 +299,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
                                                      [&](int b) { return double(w.bandCost[b]); }));
     };
     w.cells.build(
-        n, [&](std::size_t i, int a) { return set.x[i][a]; },
+        n, [&](std::size_t i, int a) { return set.x[i][a]; }, box,
         0.5 * (Kernel::support * hMax + lists.skin), 4 << D, set.nFluid, cut);
     w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
   }

@@ -18,6 +18,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "sph/CacheLines.hpp"
@@ -52,16 +54,43 @@ class CellList {
   template <class Pos, class Cut = EvenLayers>
   void build(std::size_t n, Pos&& pos, double cellSize, int cellsPerPoint = 4,
              std::size_t leading = ~std::size_t{0}, Cut&& cut = {}) {
+    Box box;
+    box.include(n, pos, leading);
+    build(n, pos, box, cellSize, cellsPerPoint, leading, cut);
+  }
+  // The points' bounding box, for a caller that finds it in a pass of its own over the points.
+  struct Box {
+    double lo[D], hi[D];
+    Box() {
+      for (int a = 0; a < D; ++a) lo[a] = 1e300, hi[a] = -1e300;
+    }
+    template <class Pos>
+    void include(std::size_t n, Pos&& pos, std::size_t leading) {  // in shares, as build() splits
+      const std::int64_t count = static_cast<std::int64_t>(n);
+      const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
+      double low[D], high[D];
+      for (int a = 0; a < D; ++a) low[a] = lo[a], high[a] = hi[a];
+#pragma omp parallel if (count >= parallelFrom()) reduction(min : low[:D]) reduction(max : high[:D])
+      walk(shareOf(count, lead, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
+        for (int a = 0; a < D; ++a)
+          low[a] = std::min(low[a], pos(i, a)), high[a] = std::max(high[a], pos(i, a));
+      });
+      for (int a = 0; a < D; ++a) lo[a] = low[a], hi[a] = high[a];
+    }
+  };
+  template <class Pos, class Cut = EvenLayers>
+  void build(std::size_t n, Pos&& pos, const Box& box, double cellSize, int cellsPerPoint,
+             std::size_t leading, Cut&& cut) {
     const std::int64_t count = static_cast<std::int64_t>(n);
     const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
     const bool parallel = count >= parallelFrom();
     double lo[D], hi[D];
-    for (int a = 0; a < D; ++a) lo[a] = n > 0 ? pos(0, a) : 0.0, hi[a] = lo[a];
-#pragma omp parallel if (parallel) reduction(min : lo[:D]) reduction(max : hi[:D])
-    walk(shareOf(count, lead, omp_get_thread_num(), omp_get_num_threads()), [&](std::int64_t i) {
-      for (int a = 0; a < D; ++a)
-        lo[a] = std::min(lo[a], pos(i, a)), hi[a] = std::max(hi[a], pos(i, a));
-    });
+    for (int a = 0; a < D; ++a) {
+      lo[a] = n > 0 ? box.lo[a] : 0.0, hi[a] = n > 0 ? box.hi[a] : 0.0;
+      if (!(lo[a] <= hi[a]))  // (also a coordinate that is not a number)
+        throw std::invalid_argument("CellList: the points' box is empty along axis " +
+                                    std::to_string(a));
+    }
     // An axis at least twice as long as the last is numbered slowest (the longest such), the
     // others keep their order. (Only a clearly longer axis: on a near-square box the points'
     // usual lattice order, axis 0 fastest, stays the sorted order's.)
