@@ -277,11 +277,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     typename CellList<D>::Box box;
     double lo[D], hi[D];
     for (int a = 0; a < D; ++a) lo[a] = box.lo[a], hi[a] = box.hi[a];
-#pragma omp parallel if (nSorted >= parallelFrom()) reduction(max                         \
-                                                              : hMax) reduction(min       \
-                                                                                : lo[:D]) \
-    reduction(max                                                                         \
-              : hi[:D])
+    const bool team = nSorted >= parallelFrom();
+#pragma omp parallel if (team) reduction(max : hMax, hi[:D]) reduction(min : lo[:D])
     walk(shareOf(nSorted, nFluidEntries, omp_get_thread_num(), omp_get_num_threads()),
          [&](std::int64_t k) {
            hMax = std::max(hMax, set.h[k]);
@@ -294,7 +291,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // its part of the sorted order from its own cache.
     auto cut = [&](int layers, int nt, int u) {
       const int bands = (layers + bandLayers - 1) / bandLayers;
-      if (static_cast<int>(w.bandCost.size()) != bands) return layers * u / nt;
+      if (static_cast<int>(w.bandCost.size()) != bands)
+        return typename CellList<D>::EvenLayers{}(layers, nt, u);
       return std::min(layers, bandLayers * firstBand(u, nt, bands,
                                                      [&](int b) { return double(w.bandCost[b]); }));
     };
