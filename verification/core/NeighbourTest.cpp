@@ -8,6 +8,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -129,6 +130,17 @@ void forwardRowsAgainstBruteForce(unsigned seed, bool clustered) {
       if (within<D>(x[i], x[j], h[i], h[j])) expected.insert({i, j});
   ASSERT_GT(expected.size(), static_cast<std::size_t>(2 * n)) << "too few pairs to test anything";
   EXPECT_EQ(found, expected);  // every pair once
+}
+
+// Points whose coordinates are all not a number have no box to bin them in: a clear error, not a
+// grid of undefined size.
+TEST(Neighbours, CellListRefusesPointsWithoutABox) {
+  std::vector<sph::Vec<2>> x(10, sph::Vec<2>(std::nan(""), 0.5));
+  sph::CellList<2> cells;
+  EXPECT_THROW(cells.build(x, 0.1), std::invalid_argument);
+  x.assign(10, sph::Vec<2>(0.25, 0.5));  // one point's worth of box: one cell
+  cells.build(x, 0.1);
+  EXPECT_EQ(cells.cells(), 1);
 }
 
 TEST(Neighbours, ForwardRowsHoldEachPairOnce) {

@@ -87,7 +87,7 @@ class CellList {
     double lo[D], hi[D];
     for (int a = 0; a < D; ++a) {
       lo[a] = n > 0 ? box.lo[a] : 0.0, hi[a] = n > 0 ? box.hi[a] : 0.0;
-      if (!(lo[a] <= hi[a]))  // (also a coordinate that is not a number)
+      if (!(lo[a] <= hi[a]))  // no point with a number for this coordinate
         throw std::invalid_argument("CellList: the points' box is empty along axis " +
                                     std::to_string(a));
     }
