@@ -173,7 +173,7 @@ struct ForceEvaluation<D>::Workspace {
   // pass 1 tests, 5 per neighbour pass 2 takes and 22 per particle (its rows, its sums). Fitted
   // to the bands' times on one thread, lists built and kept: the dam break at dx 0.01 after 500
   // and 5,000 steps, and makeBlock (perf/Workload.hpp) at 1e3 and 1e4 particles, 0.5-1.1 ns a
-  // candidate, 4.8-5.9 ns a neighbour, 10-41 ns a particle. The bands' times differ from the
+  // candidate, 4.7-5.9 ns a neighbour, 10-41 ns a particle. The bands' times differ from the
   // counts (scaled) by 2.1-6.4 % rms; from the candidates plus 3 per neighbour alone, as before,
   // by 2.9-10 % (the last band of the block at 1e3, the free surface's, by 35 %). Counted, not
   // timed: the cut is the same in every run.
