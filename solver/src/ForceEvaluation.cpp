@@ -629,23 +629,31 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // record. Instead of a barrier between the parities, each odd band waits for its two even
     // neighbours only, so that a thread's share is balanced on its whole work, not on each
     // parity's (1e3 particles, 2 threads: 12 of 61 us were one thread waiting at the barriers).
-    // The even bands at the share's ends go first: the neighbours' odd bands wait for them.
+    // The even bands at the share's ends go first: the neighbours' odd bands wait for them. The
+    // others go in the order 2, 1, 4, 3, ...: an odd band reads and writes the entries of the
+    // even band just run, while they are still in the cache (all even bands, then all odd ones,
+    // read every entry from memory twice once a thread's share outgrows the caches: 1e6
+    // particles, medians of 4 alternated runs, 1 thread 136 -> 125 ns a particle, 2 threads
+    // 70.8 -> 65.8 ns; 1e3-1e4 unchanged).
     auto runBand = [&](int b) {
       w.bandWork[b] =
           skinned ? band.template operator()<true>(b) : band.template operator()<false>(b);
     };
     const int firstEven = first + first % 2, lastEven = last - last % 2;
 #pragma omp barrier
+    int nextEven = firstEven + 2;  // the thread's next even band not yet run (past the ends)
     if (first <= last && firstEven <= lastEven) {  // (a thread without bands has first > last)
       runBand(firstEven), evenDone.done(firstEven);
       if (lastEven > firstEven) runBand(lastEven), evenDone.done(lastEven);
-      for (int b = firstEven + 2; b < lastEven; b += 2) runBand(b), evenDone.done(b);
     }
     for (int b = first + 1 - first % 2; b <= last; b += 2) {
+      for (; nextEven < lastEven && nextEven <= b + 1; nextEven += 2)
+        runBand(nextEven), evenDone.done(nextEven);
       evenDone.wait(b - 1);
       if (b + 1 < nBands) evenDone.wait(b + 1);
       runBand(b);
     }
+    for (; nextEven < lastEven; nextEven += 2) runBand(nextEven), evenDone.done(nextEven);
 #pragma omp barrier
     {
       const int* sorted = order.data();
