@@ -34,10 +34,9 @@ const sph::Phase phases[2] = {{"water", 1000.0, 20.0, 8.9e-4, 0.0, 7.0},
 // ~300 particles in a unit-ish box with random velocity, density (+-3 %), h (+-20 %) and phase.
 // The last 50 entries play the halo: they are neighbours but receive no rates.
 template <int D>
-sph::InteractionSet<D> randomSet(unsigned seed) {
+sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const int n = 300;
   const double dx = std::pow(1.0 / n, 1.0 / D);  // mean spacing in a unit box
   sph::InteractionSet<D> s;
   for (int i = 0; i < n; ++i) {
@@ -245,11 +244,14 @@ TEST(ForceEvaluation, KeptNeighbourListsMatchReference3D) {
 
 // The pair loop visits each pair once, in bands of cell layers that run in a fixed order of two
 // phases (ForceEvaluation.cpp), so every rate is summed in an order that the cell list alone
-// fixes: the thread count must not change a single bit. 300 particles make 6 bands here. The
-// threads' shares are cut by entries in a first evaluation and by the work counted in the last
-// one after that, so each count evaluates twice; 5 threads leave some without an even band.
-TEST(ForceEvaluation, ThreadCountDoesNotChangeBits) {
-  const auto set = randomSet<2>(13);
+// fixes: the thread count must not change a single bit. 300 particles make 6 bands here, 3,000
+// make 18 (so that two threads each run even bands between the ends of their shares, in the
+// order 2, 1, 4, 3, ...). The threads' shares are cut by entries in a first evaluation and by the
+// work counted in the last one after that, so each count evaluates twice; 5 threads leave some
+// without an even band.
+class ThreadCount : public ::testing::TestWithParam<int> {};
+TEST_P(ThreadCount, DoesNotChangeBits) {
+  const auto set = randomSet<2>(13, GetParam());
   const sph::TermSwitches all{true, true, true};
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -271,5 +273,6 @@ TEST(ForceEvaluation, ThreadCountDoesNotChangeBits) {
   }
   omp_set_num_threads(saved);
 }
+INSTANTIATE_TEST_SUITE_P(ForceEvaluation, ThreadCount, ::testing::Values(300, 3000));
 
 }  // namespace
