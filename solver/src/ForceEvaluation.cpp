@@ -357,9 +357,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // copied in just before the first band that reads them (itself or the band below) runs, so
     // that they are still in the cache then; the thread's first band, which the thread before
     // reads, before the barrier. (All at once before the barrier, they came back from memory
-    // once a share outgrew the caches: 1e6 particles, medians of 5 alternated runs, lists built,
-    // 1 thread 123.5 -> 114.5 ns a particle, 2 threads 63.1 -> 57.4 ns; 1e5 1 thread 124 -> 115
-    // ns; 1e3-1e4 unchanged.)
+    // once a share outgrew the caches: 1e6 particles, lists built, medians of alternated runs,
+    // 1 thread 123.7 -> 114.4 ns a particle, 2 threads 63.5 -> 57.5 ns; 1e5 1 thread 125.4 ->
+    // 114.7 ns; 1e3-1e4 unchanged; perf/README.md.)
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
     const int first = firstBand(t, nt, nBands, cost), last = firstBand(t + 1, nt, nBands, cost) - 1;
     const int mineBegin = first <= last ? bandBegin(first) : 0;
@@ -648,7 +648,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     // others go in the order 2, 1, 4, 3, ...: an odd band reads and writes the entries of the
     // even band just run, while they are still in the cache (all even bands, then all odd ones,
     // read every entry from memory twice once a thread's share outgrows the caches: 1e6
-    // particles, medians of 4 alternated runs, 1 thread 136 -> 125 ns a particle, 2 threads
+    // particles, means of 4 alternated runs, 1 thread 136.1 -> 125.3 ns a particle, 2 threads
     // 70.8 -> 65.8 ns; 1e3-1e4 unchanged).
     auto runBand = [&](int b) {
       copyIn(b), copyIn(b + 1);  // the entries band b reads
