@@ -146,21 +146,33 @@ class BandSignals {
 template <int D>
 struct ForceEvaluation<D>::Workspace {
   CellList<D> cells;
-  // Cell-sorted copies: x[a][k], v[a][k] for axis a, sorted position k (v, rho, p/rho^2, m by
-  // field in 3-D only).
-  std::array<LineVector<double>, D> x, v;
-  LineVector<double> h, rho, pOverRho2, m;
-  LineVector<std::int64_t> receives;  // all ones for a fluid entry, zero for the halo
-  // For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho, p/rho^2, m}
-  // (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors and transposes
-  // them, instead of gathering each field. For every D, a 16-byte record {mu, 1/rho},
-  // and the rates' record (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by axis).
-  LineVector<double> recordStore, extraStore, rateStore;
-  double *record = nullptr, *extra = nullptr, *rate = nullptr;  // their data: on cache lines
+  // The rates' record of each sorted entry (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by
+  // axis), which every thread adds to; on cache lines.
+  LineVector<double> rateStore;
+  double* rate = nullptr;
   struct alignas(64) Scratch {  // one thread's: a cell's forward rows, a particle's neighbours
     LineVector<std::array<int, 2>> rows;
     LineVector<int> neighbours;
-    LineVector<unsigned char> copied;  // of the thread's bands in the pair loop
+    LineVector<unsigned char> copied;  // of the thread's bands in the pair loop, and the next
+    // The thread's cell-sorted copies of the entries it reads, at their sorted positions k: those
+    // of its bands and of the band after them (set only there). x[a][k], v[a][k] for axis a (v,
+    // rho, p/rho^2, m by field in 3-D only), receives[k] all ones for a fluid entry, zero for
+    // the halo. For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho,
+    // p/rho^2, m} (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors
+    // and transposes them, instead of gathering each field. For every D, a 16-byte record {mu,
+    // 1/rho}. Each thread has a copy of its own of the next band (the first of the next
+    // thread's), which it reads too: when the other thread copied it in, each store went to a
+    // line that this thread's core had read, and when the two cores share no cache each such
+    // store waited for the other core (makeBlock, two threads, rdtsc: that band's copy-in at 1e4
+    // 37-41 us against 7.6-7.9 when the cores share a cache; now 2.1-3.3 us, and thread 0's wait
+    // for it at the barrier 32-37 -> 1.0-1.4 us; at 1e3 9.8-10.7 -> 1.4 us). The rates stay one
+    // array, zeroed by each entry's own thread. Unset arrays: a thread's copy costs memory for
+    // its part only (plus whole 2 MiB pages at its ends: 596-607 -> 632-639 B a particle at 1e6).
+    std::array<UnsetLineVector<double>, D> x, v;
+    UnsetLineVector<double> h, rho, pOverRho2, m;
+    UnsetLineVector<std::int64_t> receives;
+    UnsetLineVector<double> recordStore, extraStore;
+    double *record = nullptr, *extra = nullptr;
   };
   std::vector<Scratch> scratch;
   // The neighbour lists of the last build (NeighbourLists): band b's particles' lists one after
@@ -304,33 +316,36 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   }
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
-  for (int a = 0; a < D; ++a) w.x[a].resize(nPadded);
-  w.h.resize(nPadded), w.receives.resize(nPadded);
-  if constexpr (D > 2) {  // in 1-D and 2-D these fields are read from the records only
-    for (int a = 0; a < D; ++a) w.v[a].resize(nPadded);
-    w.rho.resize(nPadded), w.pOverRho2.resize(nPadded), w.m.resize(nPadded);
-  }
   constexpr int recordSize = 8, extraSize = 2, rateWidth = D <= 2 ? 4 : 8;
-  if constexpr (D <= 2) w.record = grown(w.recordStore, recordSize * nPadded);
-  w.extra = grown(w.extraStore, extraSize * nPadded);
   w.rate = grown(w.rateStore, rateWidth * nPadded);
-  for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
-    for (int a = 0; a < D; ++a) w.x[a][k] = 1e100;
-    w.h[k] = hMax, w.receives[k] = 0;
-    double* e = w.extra + extraSize * k;
-    e[0] = 0.0, e[1] = 1.0;
-    if constexpr (D <= 2) {
-      double* r = w.record + recordSize * k;
-      r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
-    } else {
-      for (int a = 0; a < D; ++a) w.v[a][k] = 0.0;
-      w.rho[k] = 1.0, w.pOverRho2[k] = 0.0, w.m[k] = 0.0;
+  if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
+    w.scratch.resize(omp_get_max_threads());
+  for (auto& view : w.scratch) {
+    for (int a = 0; a < D; ++a) view.x[a].resize(nPadded);
+    view.h.resize(nPadded), view.receives.resize(nPadded);
+    if constexpr (D > 2) {  // in 1-D and 2-D these fields are read from the records only
+      for (int a = 0; a < D; ++a) view.v[a].resize(nPadded);
+      view.rho.resize(nPadded), view.pOverRho2.resize(nPadded), view.m.resize(nPadded);
+    }
+    if constexpr (D <= 2) view.recordStore.resize(recordSize * nPadded);
+    view.extraStore.resize(extraSize * nPadded);
+    view.record = view.recordStore.data(), view.extra = view.extraStore.data();
+    for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
+      for (int a = 0; a < D; ++a) view.x[a][k] = 1e100;
+      view.h[k] = hMax, view.receives[k] = 0;
+      double* e = view.extra + extraSize * k;
+      e[0] = 0.0, e[1] = 1.0;
+      if constexpr (D <= 2) {
+        double* r = view.record + recordSize * k;
+        r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
+      } else {
+        for (int a = 0; a < D; ++a) view.v[a][k] = 0.0;
+        view.rho[k] = 1.0, view.pOverRho2[k] = 0.0, view.m[k] = 0.0;
+      }
     }
   }
   const int nFluid = static_cast<int>(set.nFluid);
   out.resize(set.nFluid);
-  if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
-    w.scratch.resize(omp_get_max_threads());
   // Bands of two layers of cells: a point's forward neighbours lie in its own band and the next,
   // so the even bands can run at the same time, then the odd ones.
   constexpr int reach = bandLayers;
@@ -365,7 +380,10 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     const int mineBegin = first <= last ? bandBegin(first) : 0;
     const int mineEnd = first <= last ? bandBegin(last + 1) : 0;
     const Share mine{mineBegin, mineEnd};  // walked so that the prefetcher stays inside (walk())
-    const auto copyEntry = [&] {
+    auto& view = w.scratch[t];
+    // Copies entry k into the thread's view, and zeroes its rates if `rates` (the thread's own
+    // entries; the next band's owner zeroes those of its entries).
+    const auto copyEntry = [&](double* rates) {
       // Through pointers copied into the loop: a store through one of them might change the
       // vectors' own data pointers as far as the compiler knows, so that it loads them again.
       const int* sorted = order.data();
@@ -374,10 +392,11 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       const double *sRho = set.rho.data(), *sM = set.m.data(), *sH = set.h.data(),
                    *sP = set.p.data(), *sMu = set.mu.data();
       std::array<double*, D> wx, wv;
-      for (int a = 0; a < D; ++a) wx[a] = w.x[a].data(), wv[a] = w.v[a].data();
-      double *wh = w.h.data(), *wRho = w.rho.data(), *wM = w.m.data(), *wPr = w.pOverRho2.data();
-      std::int64_t* wReceives = w.receives.data();
-      double *records = w.record, *extras = w.extra, *rates = w.rate;
+      for (int a = 0; a < D; ++a) wx[a] = view.x[a].data(), wv[a] = view.v[a].data();
+      double *wh = view.h.data(), *wRho = view.rho.data(), *wM = view.m.data(),
+             *wPr = view.pOverRho2.data();
+      std::int64_t* wReceives = view.receives.data();
+      double *records = view.record, *extras = view.extra;
       const bool fields = D > 2 || !reuse;
       return [=](std::int64_t k) {
         const int s = sorted[k];
@@ -392,8 +411,10 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
         }
         double* e = extras + extraSize * k;
         e[0] = sMu[s], e[1] = rhoInv;
-        double* rate = rates + rateWidth * k;
-        for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
+        if (rates) {
+          double* rate = rates + rateWidth * k;
+          for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
+        }
         if constexpr (D <= 2) {
           double* r = records + recordSize * k;
           r[0] = sx[s][0], r[1] = D > 1 ? sx[s][D - 1] : 0.0;
@@ -404,21 +425,27 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           wRho[k] = rho, wM[k] = m, wPr[k] = pr;
         }
       };
-    }();
-    auto& copied = w.scratch[t].copied;  // which of the thread's bands are copied in
-    copied.assign(std::max(0, last - first + 1), 0);
-    auto copyIn = [&](int b) {  // band b's entries, if b is the thread's and not yet copied
-      if (b < first || b > last || copied[b - first]) return;
+    };
+    const auto copyOwn = copyEntry(w.rate), copyNext = copyEntry(nullptr);
+    auto& copied = view.copied;  // which of the thread's bands, and the next, are copied in
+    copied.assign(std::max(0, last - first + 2), 0);
+    auto copyIn = [&](int b) {  // band b's entries, if b is the thread's or the next and not yet
+      if (b < first || b > last + 1 || b >= nBands || copied[b - first]) return;
       copied[b - first] = 1;
-      walk(Share{bandBegin(b), bandBegin(b + 1)}, copyEntry);
+      const Share entries{bandBegin(b), bandBegin(b + 1)};
+      if (b <= last)
+        walk(entries, copyOwn);
+      else
+        walk(entries, copyNext);
     };
     copyIn(first);
     const double* xs[3] = {};  // three components whatever D, for the pair loop's r_ij, v_ij
     const double* vs[3] = {};
-    for (int a = 0; a < D; ++a) xs[a] = w.x[a].data(), vs[a] = w.v[a].data();
-    const double *hs = w.h.data(), *rhos = w.rho.data(), *prs = w.pOverRho2.data(),
-                 *ms = w.m.data();
-    const std::int64_t* receives = w.receives.data();
+    for (int a = 0; a < D; ++a) xs[a] = view.x[a].data(), vs[a] = view.v[a].data();
+    const double *hs = view.h.data(), *rhos = view.rho.data(), *prs = view.pOverRho2.data(),
+                 *ms = view.m.data();
+    const std::int64_t* receives = view.receives.data();
+    double *const record = view.record, *const extra = view.extra;
     constexpr double reachFactor2 = 0.25 * Kernel::support * Kernel::support;
     // (support h_ij + skin)^2 - (support h_ij)^2 = skinSupport 2 h_ij + skin2: with skin = 0
     // the very test of the pairs inside the support.
@@ -457,7 +484,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
         double rhoi, pri, mi;
         double hi;
         if constexpr (D <= 2) {
-          const double* r = w.record + recordSize * i;
+          const double* r = record + recordSize * i;
           xi[0] = broadcast(r[0]), xi[1] = broadcast(r[1]), xi[2] = Vd{};
           vi[0] = broadcast(r[2]), vi[1] = broadcast(r[3]), vi[2] = Vd{};
           hi = r[4], rhoi = r[5], pri = r[6], mi = r[7];
@@ -465,7 +492,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           for (int a = 0; a < 3; ++a) xi[a] = broadcast(xs[a][i]), vi[a] = broadcast(vs[a][i]);
           hi = hs[i], rhoi = rhos[i], pri = prs[i], mi = ms[i];
         }
-        const double* ei = w.extra + extraSize * i;
+        const double* ei = extra + extraSize * i;
         const double mui = ei[0], rhoInvi = ei[1], mOverRhoi = mi * rhoInvi;
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
 
@@ -544,8 +571,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           Vd xj[3], vj[3], hj, rhoj, prj, mj;  // the four neighbours' fields
           if constexpr (D <= 2) {
             static_assert(recordSize * sizeof(double) == 4 * 16);
-            const double* r[4] = {at(w.record, 4, 0), at(w.record, 4, 1), at(w.record, 4, 2),
-                                  at(w.record, 4, 3)};
+            const double* r[4] = {at(record, 4, 0), at(record, 4, 1), at(record, 4, 2),
+                                  at(record, 4, 3)};
             xj[0] = load(r[0]), xj[1] = load(r[1]), vj[0] = load(r[2]), vj[1] = load(r[3]);
             transpose(xj[0], xj[1], vj[0], vj[1]);
             hj = load(r[0] + 4), rhoj = load(r[1] + 4), prj = load(r[2] + 4), mj = load(r[3] + 4);
@@ -556,8 +583,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
             hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
           }
           static_assert(extraSize * sizeof(double) == 16);
-          const Vd t0 = load2(at(w.extra, 1, 0), at(w.extra, 1, 2)),
-                   t1 = load2(at(w.extra, 1, 1), at(w.extra, 1, 3));
+          const Vd t0 = load2(at(extra, 1, 0), at(extra, 1, 2)),
+                   t1 = load2(at(extra, 1, 1), at(extra, 1, 3));
           const Vd muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6),
                    rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7);
           // r_ij, v_ij by component.
@@ -673,7 +700,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
 #pragma omp barrier
     {
       const int* sorted = order.data();
-      const double *rates = w.rate, *records = w.record;
+      const double *rates = w.rate, *records = record;
       double *dRho = out.drhodt.data(), *dH = out.dhdt.data();
       Vec<D>* dV = out.dvdt.data();
       const Vec<D> gravity = g;

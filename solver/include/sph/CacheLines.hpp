@@ -7,7 +7,9 @@
 // 14 runs) -> 2.51-2.84 s (median 2.67 s, 11 runs), alternated with the parent; the same bits; no
 // change when they share one.
 #include <cstddef>
+#include <limits>
 #include <new>
+#include <utility>
 #include <vector>
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -30,6 +32,8 @@ struct CacheLineAllocator {
   template <class U>
   constexpr CacheLineAllocator(const CacheLineAllocator<U>&) noexcept {}
   T* allocate(std::size_t n) {  // whole lines, so that no other allocation shares the last one
+    if (n > (std::numeric_limits<std::size_t>::max() / 2 - hugePage) / sizeof(T))
+      throw std::bad_array_new_length();  // (the rounding below would overflow)
     const std::size_t bytes = (n * sizeof(T) + cacheLine - 1) / cacheLine * cacheLine;
     if (bytes < hugeFrom)
       return static_cast<T*>(::operator new (bytes, std::align_val_t{cacheLine}));
@@ -52,5 +56,29 @@ struct CacheLineAllocator {
 
 template <class T>
 using LineVector = std::vector<T, CacheLineAllocator<T>>;
+
+// The same for an array whose items are all stored before they are read: resize() leaves the new
+// items unset (no pass that zeroes them, no page touched before its first store), so that a
+// thread's copy of a part of a large array costs memory for that part only.
+template <class T>
+struct UnsetLineAllocator : CacheLineAllocator<T> {
+  UnsetLineAllocator() = default;
+  template <class U>
+  constexpr UnsetLineAllocator(const UnsetLineAllocator<U>&) noexcept {}
+  template <class U>
+  struct rebind {
+    using other = UnsetLineAllocator<U>;
+  };
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <class T>
+using UnsetLineVector = std::vector<T, UnsetLineAllocator<T>>;
 
 }  // namespace sph
