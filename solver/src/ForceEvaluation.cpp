@@ -165,7 +165,7 @@ struct ForceEvaluation<D>::Workspace {
     // line that this thread's core had read, and when the two cores share no cache each such
     // store waited for the other core (makeBlock, two threads, rdtsc: that band's copy-in at 1e4
     // 37-41 us against 7.6-7.9 when the cores share a cache; now 2.1-3.3 us, and thread 0's wait
-    // for it at the barrier 32-37 -> 1.0-1.4 us; at 1e3 9.8-10.7 -> 1.4 us). The rates stay one
+    // for it at the barrier 32-37 -> 0.4-1.4 us; at 1e3 9.8-10.7 -> 0.6-1.4 us). The rates stay one
     // array, zeroed by each entry's own thread. Unset arrays: a thread's copy costs memory for
     // its part only (plus whole 2 MiB pages at its ends: 596-607 -> 632-639 B a particle at 1e6).
     std::array<UnsetLineVector<double>, D> x, v;
