@@ -430,7 +430,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     auto& copied = view.copied;  // which of the thread's bands, and the next, are copied in
     copied.assign(std::max(0, last - first + 2), 0);
     auto copyIn = [&](int b) {  // band b's entries, if b is the thread's or the next and not yet
-      if (b < first || b > last + 1 || b >= nBands || copied[b - first]) return;
+      if (first > last || b < first || b > last + 1 || b >= nBands || copied[b - first]) return;
       copied[b - first] = 1;
       const Share entries{bandBegin(b), bandBegin(b + 1)};
       if (b <= last)
