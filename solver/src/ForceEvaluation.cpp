@@ -46,8 +46,9 @@ namespace sph {
 //   pair's j lies in i's band or the next, so the even bands run at once, and each odd band once
 //   the even bands beside it are done (one flag a band); within a band entries go in sorted
 //   order. Every rate is thus summed in an order fixed by the cell list alone. Each thread takes a
-//   contiguous run of bands of about equal work (counted in the last evaluation) and copies in
-//   and writes out the entries it works on: little moves between cores.
+//   contiguous run of bands of about equal work (counted in the last evaluation), copies the
+//   entries it reads (its bands' and the next band's) into arrays of its own, and writes out its
+//   bands' entries: little moves between cores, and only the rates are shared.
 // * At most one square root and one division per pair: 1/r, 1/h_ij, 1/(r^2 + eta^2) and
 //   1/(rho_i + rho_j) come from the reciprocal of their product (pairReciprocals); with AVX-512
 //   neither, but Newton steps from hardware estimates (pairInverses).
