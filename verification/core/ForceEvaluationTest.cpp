@@ -31,8 +31,8 @@ constexpr KernelKind kinds[] = {KernelKind::quadratic, KernelKind::cubic_spline,
 const sph::Phase phases[2] = {{"water", 1000.0, 20.0, 8.9e-4, 0.0, 7.0},
                               {"heavy", 1500.0, 30.0, 5e-2, 100.0, 7.0}};
 
-// n particles (300 unless given) in a unit-ish box with random velocity, density (+-3 %), h (+-20 %)
-// and phase.
+// n particles (300 unless given) in a unit-ish box with random velocity, density (+-3 %),
+// h (+-20 %) and phase.
 // The last 50 entries play the halo: they are neighbours but receive no rates.
 template <int D>
 sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
