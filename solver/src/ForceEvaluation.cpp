@@ -151,8 +151,7 @@ struct ForceEvaluation<D>::Workspace {
   // axis), which every thread adds to; on cache lines.
   LineVector<double> rateStore;
   double* rate = nullptr;
-  struct alignas(64) Scratch {  // one thread's: a cell's forward rows, a particle's neighbours
-    LineVector<std::array<int, 2>> rows;
+  struct alignas(64) Scratch {  // one thread's: a particle's neighbours
     LineVector<int> neighbours;
     LineVector<unsigned char> copied;  // of the thread's bands in the pair loop, and the next
     // The thread's cell-sorted copies of the entries it reads, at their sorted positions k: those
@@ -167,8 +166,9 @@ struct ForceEvaluation<D>::Workspace {
     // store waited for the other core (makeBlock, two threads, rdtsc: that band's copy-in at 1e4
     // 37-41 us against 7.6-7.9 when the cores share a cache; now 2.1-3.3 us, and thread 0's wait
     // for it at the barrier 32-37 -> 0.4-1.4 us; at 1e3 9.8-10.7 -> 0.6-1.4 us). The rates stay one
-    // array, zeroed by each entry's own thread. Unset arrays: a thread's copy costs memory for
-    // its part only (plus whole 2 MiB pages at its ends: 596-607 -> 632-639 B a particle at 1e6).
+    // array, zeroed by each entry's own thread (by the thread that placed it, at a build). Unset
+    // arrays: a thread's copy costs memory for its part only (plus whole 2 MiB pages at its ends:
+    // 596-607 -> 632-639 B a particle at 1e6).
     std::array<UnsetLineVector<double>, D> x, v;
     UnsetLineVector<double> h, rho, pOverRho2, m;
     UnsetLineVector<std::int64_t> receives;
@@ -192,8 +192,13 @@ struct ForceEvaluation<D>::Workspace {
   // by 2.9-10 % (the last band of the block at 1e3, the free surface's, by 35 %). Counted, not
   // timed: the cut is the same in every run.
   LineVector<std::int64_t> bandCost, bandWork;
-  BandSignals evenDone;  // the even bands this evaluation has finished
-  double hMax = 0.0;     // the largest h at the last build
+  BandSignals evenDone;        // the even bands this evaluation has finished
+  double hMax = 0.0;           // the largest h at the last build
+  struct alignas(64) Extent {  // one thread's part of a build's box and h_max
+    typename CellList<D>::Box box;
+    double hMax;
+  };
+  LineVector<Extent> extents;
 };
 
 namespace {
@@ -267,6 +272,7 @@ double* grown(LineVector<double>& store, std::size_t n) {
 template <class Kernel, bool ArtificialViscosity, bool MorrisViscosity, bool VariableH, int D>
 void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, NeighbourLists lists,
               typename ForceEvaluation<D>::Workspace& w, Derivatives<D>& out) {
+  using Extent = typename ForceEvaluation<D>::Workspace::Extent;
   const std::size_t n = set.size();
   const std::int64_t nSorted = static_cast<std::int64_t>(n);
   if (nSorted + lanes >= std::int64_t{1} << 27)  // 16 j must fit the neighbour lists' int
@@ -279,41 +285,15 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
   // cells. The grid may have 4 cells per point per halving, as many as the full-size cells would.
   // Reused lists keep the last build's cells and sorted order, and its h_max for the padding (any
   // h gives a far-away, massless entry the same zero terms; a scan of all entries split by count
-  // had one thread read the h of the other's fluid at every evaluation).
-  double& hMax = w.hMax;
+  // had one thread read the h of the other's fluid at every evaluation). A build runs in the pair
+  // loop's parallel region: h_max and the box, the cell list, then the pairs, with barriers
+  // between them instead of a region each (two regions fewer).
+  constexpr int cellsPerPoint = 4 << D;
+  const int team = std::min(omp_get_max_threads(), CellList<D>::maxTeam);
   if (!reuse) {
-    hMax = 0.0;
-    // h_max and the entries' box (for the cell list) in one pass. The fluid split as the
-    // interaction set's build splits it, so that each thread reads the fluid entries it wrote;
-    // the halo (whose runs the build gives to the threads that wrote their sources) to the last
-    // thread, at the builds only.
-    const std::int64_t nFluidEntries = static_cast<std::int64_t>(set.nFluid);
-    typename CellList<D>::Box box;
-    double lo[D], hi[D];
-    for (int a = 0; a < D; ++a) lo[a] = box.lo[a], hi[a] = box.hi[a];
-    const bool team = nSorted >= parallelFrom();
-#pragma omp parallel if (team) reduction(max : hMax, hi[:D]) reduction(min : lo[:D])
-    walk(shareOf(nSorted, nFluidEntries, omp_get_thread_num(), omp_get_num_threads()),
-         [&](std::int64_t k) {
-           hMax = std::max(hMax, set.h[k]);
-           for (int a = 0; a < D; ++a)
-             lo[a] = std::min(lo[a], set.x[k][a]), hi[a] = std::max(hi[a], set.x[k][a]);
-         });
-    for (int a = 0; a < D; ++a) box.lo[a] = lo[a], box.hi[a] = hi[a];
-    // Each thread sorts the entries of the layers its bands will hold (as cut by the last
-    // evaluation's work where the bands stay as many; else evenly by layers), so that it reads
-    // its part of the sorted order from its own cache.
-    auto cut = [&](int layers, int nt, int u) {
-      const int bands = (layers + bandLayers - 1) / bandLayers;
-      if (static_cast<int>(w.bandCost.size()) != bands)
-        return typename CellList<D>::EvenLayers{}(layers, nt, u);
-      return std::min(layers, bandLayers * firstBand(u, nt, bands,
-                                                     [&](int b) { return double(w.bandCost[b]); }));
-    };
-    w.cells.build(
-        n, [&](std::size_t i, int a) { return set.x[i][a]; }, box,
-        0.5 * (Kernel::support * hMax + lists.skin), 4 << D, set.nFluid, cut);
+    w.cells.reserve(n, cellsPerPoint, team);
     w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
+    w.extents.resize(team);
   }
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
@@ -331,52 +311,115 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
     if constexpr (D <= 2) view.recordStore.resize(recordSize * nPadded);
     view.extraStore.resize(extraSize * nPadded);
     view.record = view.recordStore.data(), view.extra = view.extraStore.data();
-    for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
-      for (int a = 0; a < D; ++a) view.x[a][k] = 1e100;
-      view.h[k] = hMax, view.receives[k] = 0;
-      double* e = view.extra + extraSize * k;
-      e[0] = 0.0, e[1] = 1.0;
-      if constexpr (D <= 2) {
-        double* r = view.record + recordSize * k;
-        r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
-      } else {
-        for (int a = 0; a < D; ++a) view.v[a][k] = 0.0;
-        view.rho[k] = 1.0, view.pOverRho2[k] = 0.0, view.m[k] = 0.0;
-      }
-    }
   }
   const int nFluid = static_cast<int>(set.nFluid);
   out.resize(set.nFluid);
   // Bands of two layers of cells: a point's forward neighbours lie in its own band and the next,
-  // so the even bands can run at the same time, then the odd ones.
+  // so the even bands can run at the same time, then the odd ones. Set up before the region when
+  // the lists are reused, else by thread 0 after the cell list.
   constexpr int reach = bandLayers;
-  const int nBands = (w.cells.layers() + reach - 1) / reach;
-  if (!reuse && static_cast<int>(w.bandLists.size()) < nBands) w.bandLists.resize(nBands);
-
+  int nBands = 0;
+  bool known = false;
+  auto& evenDone = w.evenDone;
+  auto setUpBands = [&] {
+    nBands = (w.cells.layers() + reach - 1) / reach;
+    if (!reuse && static_cast<int>(w.bandLists.size()) < nBands) w.bandLists.resize(nBands);
+    known = static_cast<int>(w.bandCost.size()) == nBands;
+    w.bandWork.assign(nBands, 0);
+    evenDone.start(nBands);
+  };
+  if (reuse) setUpBands();
   auto bandBegin = [&](int b) { return w.cells.layerBegin(reach * b); };
   // A band's cost: its work in the last evaluation where the bands were as many, else its entries
   // (the particles move by a fraction of a cell a step, so a band's work changes little).
-  const bool known = static_cast<int>(w.bandCost.size()) == nBands;
   auto cost = [&](int b) {
     return double(known ? w.bandCost[b] : bandBegin(b + 1) - bandBegin(b));
   };
-  w.bandWork.assign(nBands, 0);
-  auto& evenDone = w.evenDone;
-  evenDone.start(nBands);
+  bool emptyBox = false;  // a build's box with no number along an axis (CellList::checkBox)
+  typename CellList<D>::Box builtBox;
 
-#pragma omp parallel
+  // A build's h_max, box and cell list, by each thread of the region; returns h_max.
+  auto buildCells = [&](int t, int nt) {
+    // h_max and the entries' box. The fluid split as the interaction set's build splits it, so
+    // that each thread reads the fluid entries it wrote; the halo (whose runs the build gives
+    // to the threads that wrote their sources) to the last thread.
+    typename CellList<D>::Box box;
+    {
+      Extent mine{box, 0.0};
+      walk(shareOf(nSorted, static_cast<std::int64_t>(set.nFluid), t, nt), [&](std::int64_t k) {
+        mine.hMax = std::max(mine.hMax, set.h[k]);
+        for (int a = 0; a < D; ++a)
+          mine.box.lo[a] = std::min(mine.box.lo[a], set.x[k][a]),
+          mine.box.hi[a] = std::max(mine.box.hi[a], set.x[k][a]);
+      });
+      w.extents[t] = mine;
+    }
+#pragma omp barrier
+    double hMax = 0.0;
+    for (int u = 0; u < nt; ++u) {
+      const Extent& e = w.extents[u];
+      hMax = std::max(hMax, e.hMax);
+      for (int a = 0; a < D; ++a)
+        box.lo[a] = std::min(box.lo[a], e.box.lo[a]), box.hi[a] = std::max(box.hi[a], e.box.hi[a]);
+    }
+    // No number along an axis (a NaN in every entry): the build goes on with that axis in one
+    // layer, so that every barrier is met, and the error is thrown after the region.
+    bool bad = false;
+    for (int a = 0; a < D; ++a) bad |= n > 0 && !(box.lo[a] <= box.hi[a]);
+    if (t == 0) w.hMax = hMax, emptyBox = bad, builtBox = box;
+    for (int a = 0; a < D && bad; ++a)
+      if (!(box.lo[a] <= box.hi[a])) box.lo[a] = box.hi[a] = 0.0;
+    // Each thread sorts the entries of the layers its bands will hold (as cut by the last
+    // evaluation's work where the bands stay as many; else evenly by layers), so that it reads
+    // its part of the sorted order from its own cache; and zeroes their rates.
+    auto cut = [&](int layers, int threads, int u) {
+      const int bands = (layers + bandLayers - 1) / bandLayers;
+      if (static_cast<int>(w.bandCost.size()) != bands)
+        return typename CellList<D>::EvenLayers{}(layers, threads, u);
+      return std::min(layers, bandLayers * firstBand(u, threads, bands,
+                                                     [&](int b) { return double(w.bandCost[b]); }));
+    };
+    const Share placed = w.cells.buildInTeam(
+        n, [&](std::size_t i, int a) { return set.x[i][a]; }, box,
+        0.5 * (Kernel::support * hMax + lists.skin), cellsPerPoint, set.nFluid, cut);
+    std::fill(w.rate + rateWidth * placed.begin, w.rate + rateWidth * placed.end, 0.0);
+    if (t == 0) setUpBands();
+    return hMax;
+  };
+
+#pragma omp parallel num_threads(team)
   {
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const double hMax = reuse ? w.hMax : buildCells(t, nt);
+    {
+      auto& view = w.scratch[t];
+      for (std::size_t k = n; k < nPadded; ++k) {  // far away and massless: never a neighbour
+        for (int a = 0; a < D; ++a) view.x[a][k] = 1e100;
+        view.h[k] = hMax, view.receives[k] = 0;
+        double* e = view.extra + extraSize * k;
+        e[0] = 0.0, e[1] = 1.0;
+        if constexpr (D <= 2) {
+          double* r = view.record + recordSize * k;
+          r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
+        } else {
+          for (int a = 0; a < D; ++a) view.v[a][k] = 0.0;
+          view.rho[k] = 1.0, view.pOverRho2[k] = 0.0, view.m[k] = 0.0;
+        }
+      }
+    }
+    if (!reuse) {  // the cell list, the bands and the zeroed rates, whoever wrote them
+#pragma omp barrier
+    }
     // Thread t's share: a contiguous run of bands, cut where their cost divides evenly (a band
     // goes to the thread in whose share its middle falls). A thread copies in, and writes out,
     // the entries of its bands: those it reads and writes most, so that they rarely move between
     // cores. Which thread runs a band does not change any sum (see above). A band's entries are
     // copied in just before the first band that reads them (itself or the band below) runs, so
-    // that they are still in the cache then; the thread's first band, which the thread before
-    // reads, before the barrier. (All at once before the barrier, they came back from memory
+    // that they are still in the cache then; the thread's first band before the pairs. (All at
+    // once before the pairs, they came back from memory
     // once a share outgrew the caches: 1e6 particles, lists built, medians of alternated runs,
     // 1 thread 123.7 -> 114.4 ns a particle, 2 threads 63.5 -> 57.5 ns; 1e5 1 thread 125.4 ->
     // 114.7 ns; 1e3-1e4 unchanged; perf/README.md.)
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
     const int first = firstBand(t, nt, nBands, cost), last = firstBand(t + 1, nt, nBands, cost) - 1;
     const int mineBegin = first <= last ? bandBegin(first) : 0;
     const int mineEnd = first <= last ? bandBegin(last + 1) : 0;
@@ -427,7 +470,8 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
         }
       };
     };
-    const auto copyOwn = copyEntry(w.rate), copyNext = copyEntry(nullptr);
+    // (A build zeroed the rates as it placed the entries.)
+    const auto copyOwn = copyEntry(reuse ? w.rate : nullptr), copyNext = copyEntry(nullptr);
     auto& copied = view.copied;  // which of the thread's bands, and the next, are copied in
     copied.assign(std::max(0, last - first + 2), 0);
     auto copyIn = [&](int b) {  // band b's entries, if b is the thread's or the next and not yet
@@ -476,9 +520,18 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       // Lists built without a skin are never reused: each particle's goes to the thread's scratch
       // and is overwritten by the next (a list kept in memory made pass 2 about 6 % slower).
       LineVector<int>& list = Skinned ? w.bandLists[bandIndex] : scratch.neighbours;
-      std::size_t used = 0;      // the entries of `list` taken by the band's particles so far
-      std::int64_t rowsOf = -1;  // the cell whose forward rows `scratch.rows` holds
-      std::int64_t inRows = 0;   // the candidates in those rows
+      std::size_t used = 0;  // the entries of `list` taken by the band's particles so far
+      // The forward rows of cell `rowsOf` (at most the (2 reach + 1)^(D-1) rows around it), and
+      // the candidates in them. An array on the stack, not a vector: a vector's push_back was
+      // not inlined once the pair loop's region also held the build (one thread, 1e4 particles,
+      // 101-105 -> 107-117 ns a particle; with the array 97-100 ns).
+      constexpr int rowsAround = D == 1   ? 1
+                                 : D == 2 ? 2 * reach + 1
+                                          : (2 * reach + 1) * (2 * reach + 1);
+      std::array<std::array<int, 2>, rowsAround> rows;
+      int nRows = 0;
+      std::int64_t rowsOf = -1;
+      std::int64_t inRows = 0;
       std::int64_t work = 0;
       for (std::int64_t i = begin; i < end; ++i) {
         Vd xi[3], vi[3];
@@ -505,10 +558,10 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           const std::int64_t c = w.cells.sortedCell(static_cast<int>(i));
           const int ownEnd = w.cells.template ownRowEnd<reach>(c);
           if (c != rowsOf) {
-            scratch.rows.clear();
+            nRows = 0;
             inRows = 0;
             w.cells.template forEachForwardRow<reach>(c, [&](int b, int e) {
-              scratch.rows.push_back({b, e}), inRows += e - b;
+              rows[nRows++] = {b, e}, inRows += e - b;
             });
             rowsOf = c;
           }
@@ -543,7 +596,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
             }
           };
           test(i + 1, ownEnd);
-          for (const auto& [b, e] : scratch.rows) test(b, e);
+          for (int r = 0; r < nRows; ++r) test(rows[r][0], rows[r][1]);
           work += (ownEnd - i - 1) + inRows;
           // Pad the last vector with the far-away, massless entry n: it adds zero to i.
           const Vi32 padding = Vi32{} + static_cast<int>(16 * nSorted);
@@ -684,7 +737,9 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
           skinned ? band.template operator()<true>(b) : band.template operator()<false>(b);
     };
     const int firstEven = first + first % 2, lastEven = last - last % 2;
+    if (reuse) {  // the rates zeroed before any thread adds to them
 #pragma omp barrier
+    }
     int nextEven = firstEven + 2;  // the thread's next even band not yet run (past the ends)
     if (first <= last && firstEven <= lastEven) {  // (a thread without bands has first > last)
       runBand(firstEven), evenDone.done(firstEven);
@@ -716,6 +771,7 @@ void pairLoop(const InteractionSet<D>& set, double beta, const Vec<D>& g, Neighb
       });
     }
   }
+  if (emptyBox) CellList<D>::checkBox(n, builtBox);  // throws
   std::swap(w.bandCost, w.bandWork);
 }
 

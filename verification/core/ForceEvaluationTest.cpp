@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -275,5 +276,29 @@ TEST_P(ThreadCount, DoesNotChangeBits) {
   omp_set_num_threads(saved);
 }
 INSTANTIATE_TEST_SUITE_P(ForceEvaluation, ThreadCount, ::testing::Values(300, 3000));
+
+// A build finds the entries' box inside the pair loop's parallel region: where no entry has a
+// number along an axis, the error must leave the region as an exception naming the axis (not end
+// the program), whatever the thread count, and the evaluation must work again afterwards.
+TEST(ForceEvaluation, NoNumberAlongAnAxisIsAnError) {
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    auto set = randomSet<2>(17);
+    const auto good = set;
+    for (auto& x : set.x) x[1] = std::numeric_limits<double>::quiet_NaN();
+    sph::ForceEvaluation<2> force(KernelKind::quadratic, {true, true, true}, 1.0);
+    sph::Derivatives<2> out;
+    try {
+      force(set, out);
+      ADD_FAILURE() << threads << " threads: no error";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("empty along axis 1"), std::string::npos) << e.what();
+    }
+    force(good, out);
+    for (const auto& a : out.dvdt) EXPECT_TRUE(a.allFinite()) << threads << " threads";
+  }
+  omp_set_num_threads(saved);
+}
 
 }  // namespace

@@ -81,46 +81,50 @@ class CellList {
   template <class Pos, class Cut = EvenLayers>
   void build(std::size_t n, Pos&& pos, const Box& box, double cellSize, int cellsPerPoint,
              std::size_t leading, Cut&& cut) {
-    const std::int64_t count = static_cast<std::int64_t>(n);
-    const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
-    const bool parallel = count >= parallelFrom();
-    double lo[D], hi[D];
-    for (int a = 0; a < D; ++a) {
-      lo[a] = n > 0 ? box.lo[a] : 0.0, hi[a] = n > 0 ? box.hi[a] : 0.0;
-      if (!(lo[a] <= hi[a]))  // no point with a number for this coordinate
+    checkBox(n, box);
+    const bool parallel = static_cast<std::int64_t>(n) >= parallelFrom();
+    const int threads = parallel ? std::min(omp_get_max_threads(), maxTeam) : 1;
+    reserve(n, cellsPerPoint, threads);
+#pragma omp parallel num_threads(threads) if (parallel)
+    buildInTeam(n, pos, box, cellSize, cellsPerPoint, leading, cut);
+  }
+
+  // Throws std::invalid_argument where the box has no number along an axis (no point has one
+  // there: a NaN), unless there are no points.
+  static void checkBox(std::size_t n, const Box& box) {
+    for (int a = 0; a < D && n > 0; ++a)
+      if (!(box.lo[a] <= box.hi[a]))
         throw std::invalid_argument("CellList: the points' box is empty along axis " +
                                     std::to_string(a));
-    }
-    // An axis at least twice as long as the last is numbered slowest (the longest such), the
-    // others keep their order. (Only a clearly longer axis: on a near-square box the points'
-    // usual lattice order, axis 0 fastest, stays the sorted order's.)
-    int longest = D - 1;
-    for (int a = D - 2; a >= 0; --a)
-      if (hi[a] - lo[a] >= 2.0 * (hi[D - 1] - lo[D - 1]) &&
-          hi[a] - lo[a] > hi[longest] - lo[longest])
-        longest = a;
-    for (int a = 0, k = 0; a < D; ++a)
-      if (a != longest) axis_[k++] = a;
-    axis_[D - 1] = longest;
-    for (int a = 0; a < D; ++a) lo_[a] = lo[axis_[a]];
-    // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct.
-    size_ = cellSize;
-    for (;;) {
-      std::int64_t total = 1;
-      for (int a = 0; a < D; ++a) {
-        dims_[a] = static_cast<int>(std::floor((hi[axis_[a]] - lo_[a]) / size_)) + 1;
-        total *= dims_[a];
-      }
-      if (total <= static_cast<std::int64_t>(cellsPerPoint * n + 64)) break;
-      size_ *= 2.0;
-    }
-    inverse_ = 1.0 / size_;
+  }
+
+  // The same inside a parallel region of the caller's (a pass of its own before or after the
+  // build then needs no region of its own: issue 7). reserve() first, outside the region, for the
+  // team's size (at most maxTeam); then every thread of the team calls buildInTeam with the same
+  // arguments (a box that passes checkBox). Returns the calling thread's part of the sorted order
+  // (the points of its layers, which it placed). On return the grid (cells(), layers(), ...) and
+  // that part may be read; the other threads' parts after the team's next barrier.
+  static constexpr int maxTeam = 64;
+  void reserve(std::size_t n, int cellsPerPoint, int threads) {
+    order_.resize(n), sortedCell_.resize(n);
+    // As many cells as the grid may have (below), unset: only the cells of the grid in use are
+    // ever stored to, so that the bound costs no memory beyond them.
+    const std::size_t bound = static_cast<std::size_t>(cellsPerPoint) * n + 64 + 1;
+    if (start_.size() < bound) start_.resize(bound);
+    if (static_cast<int>(buckets_.size()) < threads * threads) buckets_.resize(threads * threads);
+    blockSum_.resize(static_cast<std::size_t>(threads) * 16);
+  }
+  template <class Pos, class Cut = EvenLayers>
+  Share buildInTeam(std::size_t n, Pos&& pos, const Box& box, double cellSize, int cellsPerPoint,
+                    std::size_t leading, Cut&& cut) {
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const std::int64_t count = static_cast<std::int64_t>(n);
+    const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
+    // Every thread finds the grid (the same); the first stores it for the queries.
+    const Grid g = gridFor(n, box, cellSize, cellsPerPoint);
     std::int64_t perLayer = 1;
-    for (int a = 0; a + 1 < D; ++a) perLayer *= dims_[a];
-    const std::int64_t total = perLayer * dims_[D - 1];
-    order_.resize(n);
-    sortedCell_.resize(n);
-    start_.resize(total + 1);
+    for (int a = 0; a + 1 < D; ++a) perLayer *= g.dims[a];
+    const std::int64_t total = g.total;
     // A counting sort by cell, stable (points of a cell in increasing index). Each thread bins its
     // share of the points into one bucket for each thread (the one whose layers hold the point's
     // cell), then counts and places the points of the buckets for it: thread 0's, then thread
@@ -135,94 +139,89 @@ class CellList {
     // share a cache, 99.7-101 -> 90.4-93.0 us.)
     // start_[c + 1] counts cell c's points, then holds its next place, and so ends as the start
     // of cell c + 1.
-    const int threads = parallel ? std::min(omp_get_max_threads(), maxThreads) : 1;
-    if (static_cast<int>(buckets_.size()) < threads * threads) buckets_.resize(threads * threads);
-    blockSum_.resize(static_cast<std::size_t>(threads) * 16);
-#pragma omp parallel num_threads(threads) if (parallel)
-    {
-      const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-      const auto [begin, end] = shareOf(count, lead, t, nt);
-      std::array<std::int64_t, maxThreads + 1> firstCell{};  // thread u's: firstCell[u] .. [u + 1]
-      const int layers = dims_[D - 1];
-      for (int u = 1; u < nt; ++u)  // (ascending whatever `cut` returns)
-        firstCell[u] =
-            std::max(firstCell[u - 1], std::clamp(cut(layers, nt, u), 0, layers) * perLayer);
-      firstCell[nt] = total;
-      std::uint64_t* into[maxThreads];  // where the next point for thread u's bucket goes
-      for (int u = 0; u < nt; ++u) {
-        Bucket& bucket = buckets_[t * nt + u];
-        if (static_cast<std::int64_t>(bucket.points.size()) < end - begin)
-          bucket.points.resize(end - begin);
-        into[u] = bucket.points.data();
-      }
-      // Bin: point i of cell c as c 2^32 + i into the bucket of the thread whose cells hold c,
-      // and counted at once if they are this thread's own (the others' after the barrier).
-      const std::int64_t c0 = firstCell[t], c1 = firstCell[t + 1];
-      int* next = start_.data() + 1;  // next[c]: cell c's count, then its next place
-      std::fill(next + c0, next + c1, 0);
-      if (t == 0) start_[0] = 0;
-      int to = t;
-      std::uint64_t* out = into[to];  // into[to], in a register while `to` stays
-      for (std::int64_t i = begin; i < end; ++i) {
-        std::int64_t idx = 0, stride = 1;
-        for (int a = 0; a < D; ++a) {
-          idx += bin(pos(i, axis_[a]), a) * stride;
-          stride *= dims_[a];
-        }
-        if (idx < firstCell[to] || idx >= firstCell[to + 1]) {  // the points come near one another
-          into[to] = out;
-          while (idx >= firstCell[to + 1]) ++to;
-          while (idx < firstCell[to]) --to;
-          out = into[to];
-        }
-        *out++ = static_cast<std::uint64_t>(idx) << 32 | static_cast<std::uint64_t>(i);
-        if (to == t) ++next[idx];
-      }
-      into[to] = out;
-      for (int u = 0; u < nt; ++u)
-        buckets_[t * nt + u].filled = into[u] - buckets_[t * nt + u].points.data();
-      // Cell c's points start after all points of cells < c: after the own cells' before it and
-      // the points of the threads before (the grid has about as many cells as points, so a serial
-      // sum over it would not scale: 1e6 points on two threads, the build 2.84-3.00 ms with one
-      // serial sum, 2.68-2.87 ms so).
-      int running = 0;
-      if (nt > 1) {
-#pragma omp barrier
-        for (int u = 0; u < nt; ++u) {
-          if (u == t) continue;
-          const Bucket& bucket = buckets_[u * nt + t];
-          for (std::int64_t k = 0; k < bucket.filled; ++k) ++next[bucket.points[k] >> 32];
-        }
-        int sum = 0;
-        for (std::int64_t c = c0; c < c1; ++c) sum += next[c];
-        blockSum_[16 * t] = sum;  // a cache line a thread
-#pragma omp barrier
-        for (int u = 0; u < t; ++u) running += blockSum_[16 * u];
-      }
-      for (std::int64_t c = c0; c < c1; ++c) {
-        const int here = next[c];
-        next[c] = running, running += here;
-      }
-      // Place. Points in cell order (as Simulation::keepCellOrder stores them) come in runs of
-      // one cell: the next place kept in a register along a run.
-      std::int64_t run = -1;
-      int place = 0;
-      for (int u = 0; u < nt; ++u) {
-        const Bucket& bucket = buckets_[u * nt + t];
-        for (std::int64_t k = 0; k < bucket.filled; ++k) {
-          const std::uint64_t point = bucket.points[k];
-          const std::int64_t c = static_cast<std::int64_t>(point >> 32);
-          if (c != run) {
-            if (run >= 0) next[run] = place;
-            run = c, place = next[c];
-          }
-          order_[place] = static_cast<int>(point & 0xffffffffu);
-          sortedCell_[place] = c;
-          ++place;
-        }
-      }
-      if (run >= 0) next[run] = place;
+    const auto [begin, end] = shareOf(count, lead, t, nt);
+    std::array<std::int64_t, maxTeam + 1> firstCell{};  // thread u's: firstCell[u] .. [u + 1]
+    const int layers = g.dims[D - 1];
+    for (int u = 1; u < nt; ++u)  // (ascending whatever `cut` returns)
+      firstCell[u] =
+          std::max(firstCell[u - 1], std::clamp(cut(layers, nt, u), 0, layers) * perLayer);
+    firstCell[nt] = total;
+    std::uint64_t* into[maxTeam];  // where the next point for thread u's bucket goes
+    for (int u = 0; u < nt; ++u) {
+      Bucket& bucket = buckets_[t * nt + u];
+      if (static_cast<std::int64_t>(bucket.points.size()) < end - begin)
+        bucket.points.resize(end - begin);
+      into[u] = bucket.points.data();
     }
+    // Bin: point i of cell c as c 2^32 + i into the bucket of the thread whose cells hold c,
+    // and counted at once if they are this thread's own (the others' after the barrier).
+    const std::int64_t c0 = firstCell[t], c1 = firstCell[t + 1];
+    int* next = start_.data() + 1;  // next[c]: cell c's count, then its next place
+    std::fill(next + c0, next + c1, 0);
+    if (t == 0) start_[0] = 0, grid_ = g;
+    int to = t;
+    std::uint64_t* out = into[to];  // into[to], in a register while `to` stays
+    for (std::int64_t i = begin; i < end; ++i) {
+      std::int64_t idx = 0, stride = 1;
+      for (int a = 0; a < D; ++a) {
+        idx += g.bin(pos(i, g.axis[a]), a) * stride;
+        stride *= g.dims[a];
+      }
+      if (idx < firstCell[to] || idx >= firstCell[to + 1]) {  // the points come near one another
+        into[to] = out;
+        while (idx >= firstCell[to + 1]) ++to;
+        while (idx < firstCell[to]) --to;
+        out = into[to];
+      }
+      *out++ = static_cast<std::uint64_t>(idx) << 32 | static_cast<std::uint64_t>(i);
+      if (to == t) ++next[idx];
+    }
+    into[to] = out;
+    for (int u = 0; u < nt; ++u)
+      buckets_[t * nt + u].filled = into[u] - buckets_[t * nt + u].points.data();
+    // Cell c's points start after all points of cells < c: after the own cells' before it and
+    // the points of the threads before (the grid has about as many cells as points, so a serial
+    // sum over it would not scale: 1e6 points on two threads, the build 2.84-3.00 ms with one
+    // serial sum, 2.68-2.87 ms so).
+    int running = 0;
+    if (nt > 1) {
+#pragma omp barrier
+      for (int u = 0; u < nt; ++u) {
+        if (u == t) continue;
+        const Bucket& bucket = buckets_[u * nt + t];
+        for (std::int64_t k = 0; k < bucket.filled; ++k) ++next[bucket.points[k] >> 32];
+      }
+      int sum = 0;
+      for (std::int64_t c = c0; c < c1; ++c) sum += next[c];
+      blockSum_[16 * t] = sum;  // a cache line a thread
+#pragma omp barrier
+      for (int u = 0; u < t; ++u) running += blockSum_[16 * u];
+    }
+    const int placedBegin = running;
+    for (std::int64_t c = c0; c < c1; ++c) {
+      const int here = next[c];
+      next[c] = running, running += here;
+    }
+    // Place. Points in cell order (as Simulation::keepCellOrder stores them) come in runs of
+    // one cell: the next place kept in a register along a run.
+    std::int64_t run = -1;
+    int place = 0;
+    for (int u = 0; u < nt; ++u) {
+      const Bucket& bucket = buckets_[u * nt + t];
+      for (std::int64_t k = 0; k < bucket.filled; ++k) {
+        const std::uint64_t point = bucket.points[k];
+        const std::int64_t c = static_cast<std::int64_t>(point >> 32);
+        if (c != run) {
+          if (run >= 0) next[run] = place;
+          run = c, place = next[c];
+        }
+        order_[place] = static_cast<int>(point & 0xffffffffu);
+        sortedCell_[place] = c;
+        ++place;
+      }
+    }
+    if (run >= 0) next[run] = place;
+    return {placedBegin, running};
   }
 
   // order()[k] is the point at position k of the cell-sorted sequence.
@@ -234,7 +233,7 @@ class CellList {
     return sortedCell_[k];
   }
   std::int64_t cells() const {
-    return static_cast<std::int64_t>(start_.size()) - 1;
+    return grid_.total;
   }
   int cellBegin(std::int64_t c) const {
     return start_[c];
@@ -244,7 +243,7 @@ class CellList {
   }
   // The cell side actually used (cellSize, doubled as often as the O(N) guard needed).
   double cellSize() const {
-    return size_;
+    return grid_.size;
   }
 
   // The cell for a query point x that need not be one of the built points: -1 when x lies more
@@ -253,10 +252,10 @@ class CellList {
   std::int64_t cellOf(const Vec<D>& x) const {
     std::int64_t idx = 0, stride = 1;
     for (int a = 0; a < D; ++a) {
-      const double k = std::floor((x[axis_[a]] - lo_[a]) * inverse_);
-      if (k < -1.0 || k > dims_[a]) return -1;
-      idx += std::clamp(static_cast<int>(k), 0, dims_[a] - 1) * stride;
-      stride *= dims_[a];
+      const double k = std::floor((x[grid_.axis[a]] - grid_.lo[a]) * grid_.inverse);
+      if (k < -1.0 || k > grid_.dims[a]) return -1;
+      idx += std::clamp(static_cast<int>(k), 0, grid_.dims[a] - 1) * stride;
+      stride *= grid_.dims[a];
     }
     return idx;
   }
@@ -266,7 +265,8 @@ class CellList {
   void forEachAdjacentRange(std::int64_t c, F&& f) const {
     std::array<int, D> ic;
     std::int64_t rest = c;
-    for (int a = 0; a < D; ++a) ic[a] = static_cast<int>(rest % dims_[a]), rest /= dims_[a];
+    for (int a = 0; a < D; ++a)
+      ic[a] = static_cast<int>(rest % grid_.dims[a]), rest /= grid_.dims[a];
     std::array<int, D> off;
     off.fill(-1);
     for (;;) {
@@ -274,9 +274,9 @@ class CellList {
       bool inside = true;
       for (int a = 0; a < D; ++a) {
         const int k = ic[a] + off[a];
-        if (k < 0 || k >= dims_[a]) inside = false;
+        if (k < 0 || k >= grid_.dims[a]) inside = false;
         idx += k * stride;
-        stride *= dims_[a];
+        stride *= grid_.dims[a];
       }
       if (inside && start_[idx] != start_[idx + 1]) f(start_[idx], start_[idx + 1]);
       int a = 0;
@@ -303,19 +303,19 @@ class CellList {
   // The end of the sorted range of the cells ix .. ix+Reach of the own row of cell c.
   template <int Reach = 1>
   int ownRowEnd(std::int64_t c) const {
-    const int ix = static_cast<int>(c % dims_[0]);
-    return start_[c + std::min(Reach, dims_[0] - 1 - ix) + 1];
+    const int ix = static_cast<int>(c % grid_.dims[0]);
+    return start_[c + std::min(Reach, grid_.dims[0] - 1 - ix) + 1];
   }
 
   // Layers: the cells with one index along the slowest numbering axis, each a
   // contiguous range of the sorted order. layerBegin(layers()) is the end of the last.
   int layers() const {
-    return dims_[D - 1];
+    return grid_.dims[D - 1];
   }
   int layerBegin(int layer) const {
     std::int64_t perLayer = 1;
-    for (int a = 0; a + 1 < D; ++a) perLayer *= dims_[a];
-    return start_[std::min(layer, dims_[D - 1]) * perLayer];
+    for (int a = 0; a + 1 < D; ++a) perLayer *= grid_.dims[a];
+    return start_[std::min(layer, grid_.dims[D - 1]) * perLayer];
   }
 
   // Calls f(begin, end) for each of the (2 Reach + 1)^(D-1) rows of cells around cell `c`: the
@@ -329,25 +329,26 @@ class CellList {
   // The same for the rows whose offsets (axes 1 .. D-1) `keep(off)` accepts.
   template <int Reach, class F, class Keep>
   void forEachAdjacentRow(std::int64_t c, F&& f, Keep&& keep) const {
-    const int ix = static_cast<int>(c % dims_[0]);
+    const int ix = static_cast<int>(c % grid_.dims[0]);
     const std::int64_t rowStart = c - ix;  // cell (0, iy, iz)
-    const int first = std::max(-Reach, -ix), last = std::min(Reach, dims_[0] - 1 - ix);
+    const int first = std::max(-Reach, -ix), last = std::min(Reach, grid_.dims[0] - 1 - ix);
     if constexpr (D == 1) {
       f(start_[c + first], start_[c + last + 1]);
     } else {
       std::array<int, D> ic{};
-      std::int64_t rest = c / dims_[0];
-      for (int a = 1; a < D; ++a) ic[a] = static_cast<int>(rest % dims_[a]), rest /= dims_[a];
+      std::int64_t rest = c / grid_.dims[0];
+      for (int a = 1; a < D; ++a)
+        ic[a] = static_cast<int>(rest % grid_.dims[a]), rest /= grid_.dims[a];
       std::array<int, D> off;
       off.fill(-Reach);
       for (;;) {
-        std::int64_t shift = 0, stride = dims_[0];
+        std::int64_t shift = 0, stride = grid_.dims[0];
         bool inside = true;
         for (int a = 1; a < D; ++a) {
           const int k = ic[a] + off[a];
-          if (k < 0 || k >= dims_[a]) inside = false;
+          if (k < 0 || k >= grid_.dims[a]) inside = false;
           shift += off[a] * stride;
-          stride *= dims_[a];
+          stride *= grid_.dims[a];
         }
         if (inside && keep(off)) {
           const std::int64_t row = rowStart + shift;
@@ -362,21 +363,57 @@ class CellList {
   }
 
  private:
-  // The cell of coordinate x along numbering axis a, clamped to the grid (a product, not a
-  // division a point and axis; with the run counting above, the build of 1,721 points on one
-  // thread went from 10.3 to 9.0 us).
-  int bin(double x, int a) const {
-    return std::clamp(static_cast<int>((x - lo_[a]) * inverse_), 0, dims_[a] - 1);
+  // The cells: numbering axis a (0 fastest) is the points' axis axis[a]; lo and dims by numbering
+  // axis.
+  struct Grid {
+    std::array<int, D> axis{};
+    Vec<D> lo = Vec<D>::Zero();
+    double size = 1.0, inverse = 1.0;
+    std::array<int, D> dims{};
+    std::int64_t total = 0;
+    // The cell of coordinate x along numbering axis a, clamped to the grid (a product, not a
+    // division a point and axis; with the run counting above, the build of 1,721 points on one
+    // thread went from 10.3 to 9.0 us).
+    int bin(double x, int a) const {
+      return std::clamp(static_cast<int>((x - lo[a]) * inverse), 0, dims[a] - 1);
+    }
+  };
+  static Grid gridFor(std::size_t n, const Box& box, double cellSize, int cellsPerPoint) {
+    Grid g;
+    double lo[D], hi[D];  // (checkBox: a number on every axis)
+    for (int a = 0; a < D; ++a) lo[a] = n > 0 ? box.lo[a] : 0.0, hi[a] = n > 0 ? box.hi[a] : 0.0;
+    // An axis at least twice as long as the last is numbered slowest (the longest such), the
+    // others keep their order. (Only a clearly longer axis: on a near-square box the points'
+    // usual lattice order, axis 0 fastest, stays the sorted order's.)
+    int longest = D - 1;
+    for (int a = D - 2; a >= 0; --a)
+      if (hi[a] - lo[a] >= 2.0 * (hi[D - 1] - lo[D - 1]) &&
+          hi[a] - lo[a] > hi[longest] - lo[longest])
+        longest = a;
+    for (int a = 0, k = 0; a < D; ++a)
+      if (a != longest) g.axis[k++] = a;
+    g.axis[D - 1] = longest;
+    for (int a = 0; a < D; ++a) g.lo[a] = lo[g.axis[a]];
+    // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct.
+    g.size = cellSize;
+    for (;;) {
+      g.total = 1;
+      for (int a = 0; a < D; ++a) {
+        g.dims[a] = static_cast<int>(std::floor((hi[g.axis[a]] - g.lo[a]) / g.size)) + 1;
+        g.total *= g.dims[a];
+      }
+      if (g.total <= static_cast<std::int64_t>(cellsPerPoint * n + 64)) break;
+      g.size *= 2.0;
+    }
+    g.inverse = 1.0 / g.size;
+    return g;
   }
 
-  std::array<int, D> axis_{};   // numbering axis a (0 fastest) is the points' axis axis_[a]
-  Vec<D> lo_ = Vec<D>::Zero();  // lo_, dims_: by numbering axis
-  double size_ = 1.0, inverse_ = 1.0;
-  std::array<int, D> dims_{};
-  LineVector<int> start_, order_, blockSum_;
+  Grid grid_;
+  UnsetLineVector<int> start_;  // (reserve)
+  LineVector<int> order_, blockSum_;
   LineVector<std::int64_t> sortedCell_;
-  static constexpr int maxThreads = 64;  // the sort's team at most
-  struct alignas(64) Bucket {            // one thread's points for one thread's cells (build)
+  struct alignas(64) Bucket {  // one thread's points for one thread's cells (build)
     LineVector<std::uint64_t> points;
     std::int64_t filled = 0;
   };
