@@ -114,7 +114,9 @@ inline double sum(Vd x) {  // the lanes, in a fixed order
 // last finished it, so that nothing is reset between evaluations.
 class BandSignals {
  public:
-  void start(int bands) {  // before the parallel region of a new evaluation
+  // Before any thread of a new evaluation signals or waits: before its parallel region, or by one
+  // thread before a barrier in it.
+  void start(int bands) {
     ++evaluation_;
     if (static_cast<int>(flags_.size()) < bands) flags_.resize(bands, 0);
   }
