@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "sph/Diagnostics.hpp"
+#include "sph/EnergyBudget.hpp"
 #include "sph/InitialParticles.hpp"
 #include "sph/RunFile.hpp"
 #include "sph/Simulation.hpp"
@@ -148,6 +149,13 @@ int run(const Scene& scene, const RunOptions& opt) {
   sim.prepare();
   record();
   snapshot(false);
+  // Checked where the series is recorded; a state that fails it is not written as the last good
+  // one: the last that passed is (copied at each check, O(N) every series_every steps).
+  const EnergyBudget<D> energy(scene, sim.particles());
+  Particles<D> lastGood = sim.particles();
+  std::vector<int> lastGoodIds = sim.ids();
+  double lastGoodTime = sim.time();
+  long lastGoodStep = sim.step();
   double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
   const bool progress = opt.progress && isatty(STDERR_FILENO);
   auto lastPrint = clock::now();
@@ -162,7 +170,15 @@ int run(const Scene& scene, const RunOptions& opt) {
     tuner.took(std::chrono::duration<double>(clock::now() - stepStart).count());
     if (failure) break;
     const bool atSnapshot = sim.time() >= nextSnapshot * (1 - 1e-12);
-    if (atSnapshot || sim.step() % scene.seriesEvery == 0) record();
+    if (atSnapshot || sim.step() % scene.seriesEvery == 0) {
+      if (energy.defined()) {
+        failure = energy.check(sim.particles(), sim.ids(), sim.time(), sim.step());
+        if (failure) break;
+        lastGood = sim.particles(), lastGoodIds = sim.ids();
+        lastGoodTime = sim.time(), lastGoodStep = sim.step();
+      }
+      record();
+    }
     if (atSnapshot) {
       snapshot(false);
       nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
@@ -184,7 +200,12 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.attribute("status", std::string("unstable"));
     file.attribute("failure_cause", std::string(name(failure->cause)));
     file.attribute("failure", failure->message);
-    snapshot(true);
+    if (failure->cause == FailureCause::energy_growth) {
+      file.appendSeries(series.columns);
+      file.snapshot(lastGoodTime, lastGoodStep, fieldsOf(lastGood, lastGoodIds), true);
+    } else {
+      snapshot(true);
+    }
   } else {
     file.attribute("status", std::string("stable"));
     file.attribute("failure_cause", std::string());

@@ -22,6 +22,8 @@ std::string_view name(FailureCause c) {
       return "escaped_domain";
     case FailureCause::wall_penetration:
       return "wall_penetration";
+    case FailureCause::energy_growth:
+      return "energy_growth";
     default:
       return "dt_collapse";
   }

@@ -83,6 +83,12 @@ TEST(FailureDetection, TimeStepCollapse) {
   expectFailure("fail_dt_collapse.toml", "fail_dt_collapse", "dt_collapse");
 }
 
+// Session 28: a tank at rest without artificial viscosity, stepped at 2.4 times the acoustic limit,
+// gains energy from nowhere while its density stays in the (opened) band.
+TEST(FailureDetection, EnergyGrowth) {
+  expectFailure("fail_energy_growth.toml", "fail_energy_growth", "energy_growth");
+}
+
 // A scene with initial = "packed" (issue 6) keeps the packing history in /packing/block_<k>: a
 // record per iteration from the start (iteration 0), and says when the packing stopped on
 // max_iterations rather than on its kinetic-energy criterion (here 40 iterations, criterion 1e-30).

@@ -12,7 +12,14 @@
 
 namespace sph {
 
-enum class FailureCause { nan, density_band, escaped_domain, wall_penetration, dt_collapse };
+enum class FailureCause {
+  nan,
+  density_band,
+  escaped_domain,
+  wall_penetration,
+  dt_collapse,
+  energy_growth  // EnergyBudget.hpp
+};
 std::string_view name(FailureCause);
 
 struct Failure {
