@@ -81,17 +81,14 @@ std::optional<Failure> EnergyBudget<D>::check(const Particles<D>& s, const std::
   std::size_t fastest = 0;
   for (std::size_t i = 1; i < s.size(); ++i)
     if (s.v[i].squaredNorm() > s.v[fastest].squaredNorm()) fastest = i;
+  const char* unit = D == 3 ? "J" : D == 2 ? "J/m" : "J/m^2";  // per unit length or area below 3-D
   std::ostringstream m;
   m << "step " << step << ", t = " << t << " s: the fluid's kinetic plus internal energy, " << held
-    << " J"
-    << (D == 3   ? ""
-        : D == 2 ? "/m"
-                 : "/m^2")
-    << ", is more than twice the " << available
-    << " that its start and the body force's work since gave it (energy growth: "
-    << "the time step amplifies undamped oscillations; more artificial viscosity or a smaller "
-    << "cfl_acoustic damps them); the fastest particle, " << ids[fastest] << ", moves at "
-    << s.v[fastest].norm() << " m/s";
+    << " " << unit << ", is more than twice the " << available << " " << unit
+    << " that its start and the body force's work since gave it (energy growth: the time step "
+    << "amplifies undamped oscillations; more artificial viscosity or a smaller cfl_acoustic "
+    << "damps them); the fastest particle, " << ids[fastest] << ", moves at " << s.v[fastest].norm()
+    << " m/s";
   return Failure{FailureCause::energy_growth, step, t, ids[fastest], m.str()};
 }
 

@@ -152,8 +152,9 @@ int run(const Scene& scene, const RunOptions& opt) {
   // Checked where the series is recorded; a state that fails it is not written as the last good
   // one: the last that passed is (copied at each check, O(N) every series_every steps).
   const EnergyBudget<D> energy(scene, sim.particles());
-  Particles<D> lastGood = sim.particles();
-  std::vector<int> lastGoodIds = sim.ids();
+  Particles<D> lastGood;
+  std::vector<int> lastGoodIds;
+  if (energy.defined()) lastGood = sim.particles(), lastGoodIds = sim.ids();
   double lastGoodTime = sim.time();
   long lastGoodStep = sim.step();
   double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
