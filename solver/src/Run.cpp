@@ -149,14 +149,14 @@ int run(const Scene& scene, const RunOptions& opt) {
   sim.prepare();
   record();
   snapshot(false);
-  // Checked where the series is recorded; a state that fails it is not written as the last good
-  // one: the last that passed is (copied at each check, O(N) every series_every steps).
+  // Every series_every steps, as one of the simulation's checks of a new state: a state that fails
+  // it is not taken, so the last good one is the simulation's own.
   const EnergyBudget<D> energy(scene, sim.particles());
-  Particles<D> lastGood;
-  std::vector<int> lastGoodIds;
-  if (energy.defined()) lastGood = sim.particles(), lastGoodIds = sim.ids();
-  double lastGoodTime = sim.time();
-  long lastGoodStep = sim.step();
+  if (energy.defined())
+    sim.setCheck([&](const Particles<D>& s, double t, long step) -> std::optional<Failure> {
+      if (step % scene.seriesEvery != 0) return std::nullopt;
+      return energy.check(s, sim.ids(), t, step);
+    });
   double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
   const bool progress = opt.progress && isatty(STDERR_FILENO);
   auto lastPrint = clock::now();
@@ -171,15 +171,7 @@ int run(const Scene& scene, const RunOptions& opt) {
     tuner.took(std::chrono::duration<double>(clock::now() - stepStart).count());
     if (failure) break;
     const bool atSnapshot = sim.time() >= nextSnapshot * (1 - 1e-12);
-    if (atSnapshot || sim.step() % scene.seriesEvery == 0) {
-      if (energy.defined()) {
-        failure = energy.check(sim.particles(), sim.ids(), sim.time(), sim.step());
-        if (failure) break;
-        lastGood = sim.particles(), lastGoodIds = sim.ids();
-        lastGoodTime = sim.time(), lastGoodStep = sim.step();
-      }
-      record();
-    }
+    if (atSnapshot || sim.step() % scene.seriesEvery == 0) record();
     if (atSnapshot) {
       snapshot(false);
       nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
@@ -201,12 +193,7 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.attribute("status", std::string("unstable"));
     file.attribute("failure_cause", std::string(name(failure->cause)));
     file.attribute("failure", failure->message);
-    if (failure->cause == FailureCause::energy_growth) {
-      file.appendSeries(series.columns);
-      file.snapshot(lastGoodTime, lastGoodStep, fieldsOf(lastGood, lastGoodIds), true);
-    } else {
-      snapshot(true);
-    }
+    snapshot(true);
   } else {
     file.attribute("status", std::string("stable"));
     file.attribute("failure_cause", std::string());
