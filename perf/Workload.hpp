@@ -80,40 +80,19 @@ inline std::size_t countPairs(const InteractionSet<2>& set) {
   return pairs;
 }
 
-// Flops of the 2-D pair body of ForceEvaluation.cpp with the quadratic kernel, counted from the
-// source (add, sub, mul, compare-select 1 each; div and sqrt 1 each, though they cost 4-20 times
-// the cycles, so the bound is generous). The loop visits each pair once: the `shared` part (the
-// kernel, the reciprocals, the viscosities' pair factors) is computed once for the pair, the
-// `sided` part (each particle's mass-weighted sums) once for each of its two particles. of(t) is
-// the count per ordered pair (i fluid, j any; countPairs), (shared + 2 sided) / 2, which counts a
-// fluid-halo pair at half of what the loop spends on it: the fraction of the bound is not
-// overstated. The packing pass over the candidates (about 9 flops each, 2 candidates per pair) is
-// overhead, not counted as useful work.
+// Flops of the 2-D pair body with the quadratic kernel, as each term counts its own from its
+// source (terms/*.hpp: add, sub, mul, compare-select 1 each; div and sqrt 1 each, though they
+// cost 4-20 times the cycles, so the bound is generous). The loop visits each pair once: the
+// `shared` part (the kernel, the reciprocals, the viscosities' pair factors) is computed once for
+// the pair, the `sided` part (each particle's mass-weighted sums) once for each of its two
+// particles. of(t) is the count per ordered pair (i fluid, j any; countPairs), (shared + 2 sided)
+// / 2, which counts a fluid-halo pair at half of what the loop spends on it: the fraction of the
+// bound is not overstated. The packing pass over the candidates (about 9 flops each, 2 candidates
+// per pair) is overhead, not counted as useful work.
 struct PairFlops {
-  struct Term {
-    int shared, sided;
-  };
-  // As the loop has done them since 5a4f6bc (the kernel's norm folded into its constants, the
-  // pressure and Morris forces as one vector Q per axis; the count was 38 + 2 x 15 before):
-  // h_ij 1, 1/h_ij 1, kernel 7, v_ij and v.r 5, v.gradW 1, p_i/rho_i^2 + p_j/rho_j^2 1, G = P F 1,
-  // Q = G r_ij 2; each side: m v.gradW and add 2, m Q and add 2 x 2.
-  static constexpr Term base{19, 6};
-  static constexpr Term eta{4, 0};  // 1/(r^2 + 0.01 h_ij^2), shared by the two viscosities
-  static constexpr Term artificialViscosity{11, 0};  // mu_ij 1, Pi 7, compare-select 2, add 1
-  // Y = (mu_i + mu_j) F r^2 / (r^2 + eta^2) / (rho_i rho_j) 7, Q -= Y v_ij 2 x 2.
-  static constexpr Term morrisViscosity{11, 0};
-  static constexpr Term variableH{0, 2};  // each side: m v.gradW / rho, add
-  static Term sum(TermSwitches t) {
-    Term s = base;
-    auto add = [&](bool on, Term x) { s.shared += on ? x.shared : 0, s.sided += on ? x.sided : 0; };
-    add(t.artificialViscosity || t.morrisViscosity, eta);
-    add(t.artificialViscosity, artificialViscosity);
-    add(t.morrisViscosity, morrisViscosity);
-    add(t.variableH, variableH);
-    return s;
-  }
+  static terms::Flops sum(TermSwitches t) { return pairFlops(t); }
   static double of(TermSwitches t) {
-    const Term s = sum(t);
+    const terms::Flops s = pairFlops(t);
     return 0.5 * (s.shared + 2 * s.sided);
   }
 };

@@ -372,16 +372,20 @@ int main(int argc, char** argv) {
     const double nf = static_cast<double>(b.set.nFluid);
     omp_set_num_threads(1);
     Json terms{"cost of each term combination (2e4 particles, 1 thread)",
-               "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h",
+               "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 density "
+               "diffusion (Molteni & Colagrossi)",
                "ns per particle evaluation",
                "",
                {}};
     std::vector<double> x, y;
     std::printf("\n%5s %-70s %12s %8s %10s\n", "menu", "terms (quadratic kernel)", "ns/particle",
                 "flops/p", "GFlop/s");
-    for (int t = 0; t < 8; ++t) {
-      sph::TermSwitches sw{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0};
-      sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, sw, 1.0);
+    // delta 0.1 (Molteni & Colagrossi 2009) with the block's c0
+    const sph::terms::TermParameters parameters{
+        .beta = 1.0, .diffusionDelta = 0.1, .soundSpeed = b.phases[0].c0};
+    for (int t = 0; t < 16; ++t) {
+      sph::TermSwitches sw{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0, (t & 8) != 0};
+      sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, sw, parameters);
       const double s = timePerCall([&] { force(b.set, b.out); });
       std::string label;
       for (const auto& name : force.termNames()) label += (label.empty() ? "" : "+") + name;

@@ -8,7 +8,9 @@
 //   eq. (8)  p = p0 + K ((rho/rho0)^7 - 1), K = rho0 c0^2 / 7, per phase
 //   eq. (10) Pi_ij = beta/2 (h_i + h_j)^2/(rho_i + rho_j) (v_ij . r_ij/(r_ij^2 + eta^2))^2 if v_ij
 //   . r_ij < 0 eq. (13) dh_i/dt = h_i/D sum_j m_j/rho_j v_ij . grad_i W_ij
-// with eta^2 = 0.01 h_ij^2 and W_ij = W(|r_ij|, h_ij).
+// with eta^2 = 0.01 h_ij^2 and W_ij = W(|r_ij|, h_ij); and the density diffusion of Molteni &
+// Colagrossi (2009, eq. 9-10), d rho_i/dt += delta h_ij c0 sum_j psi_ij . grad_i W_ij m_j/rho_j,
+// psi_ij = 2 (rho_j - rho_i) r_ji / (r_ij^2 + eta^2).
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -65,9 +67,24 @@ struct Reference {
   std::vector<double> scaleV, scaleRho, scaleH;
 };
 
+// The terms' parameters of every comparison: beta of the scenes; delta of Molteni & Colagrossi's
+// paper with the c0 of the heavier phase.
+const sph::terms::TermParameters parameters{.beta = 1.0, .diffusionDelta = 0.1, .soundSpeed = 30.0};
+constexpr int menuSize = 16;  // every subset of the four optional terms
+sph::TermSwitches switchesOf(int combo) {
+  return {(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0, (combo & 8) != 0};
+}
+std::string describe(sph::TermSwitches t) {
+  return " artificial=" + std::to_string(t.artificialViscosity) +
+         " morris=" + std::to_string(t.morrisViscosity) +
+         " variable_h=" + std::to_string(t.variableH) +
+         " diffusion=" + std::to_string(t.densityDiffusion);
+}
+
 template <int D>
 Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t,
-                       double beta) {
+                       const sph::terms::TermParameters& par) {
+  const double beta = par.beta;
   const std::size_t nf = s.nFluid;
   Reference<D> ref;
   ref.rates.resize(nf);
@@ -86,6 +103,13 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
       const double continuity = s.m[j] * vij.dot(gradW);
       drho += continuity;
       ref.scaleRho[i] += std::abs(continuity);
+      if (t.densityDiffusion) {
+        const sph::Vec<D> psi = 2.0 * (s.rho[j] - s.rho[i]) * (-rij) / (r * r + eta2);
+        const double c =
+            par.diffusionDelta * hij * par.soundSpeed * psi.dot(gradW) * s.m[j] / s.rho[j];
+        drho += c;
+        ref.scaleRho[i] += std::abs(c);
+      }
       if (t.variableH) {
         const double c = s.m[j] / s.rho[j] * vij.dot(gradW);
         dh += c;
@@ -119,7 +143,7 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
 template <int D>
 double error(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t,
              const sph::Derivatives<D>& out) {
-  const Reference<D> ref = reference<D>(s, kind, t, 1.0);
+  const Reference<D> ref = reference<D>(s, kind, t, parameters);
   EXPECT_EQ(out.dvdt.size(), s.nFluid);
   double worst = 0.0;
   auto relative = [](double diff, double scale) { return scale > 0 ? diff / scale : diff; };
@@ -137,7 +161,7 @@ double error(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches
 
 template <int D>
 double compare(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t) {
-  sph::ForceEvaluation<D> forces(kind, t, 1.0);
+  sph::ForceEvaluation<D> forces(kind, t, parameters);
   sph::Derivatives<D> out;
   forces(s, out);
   return error<D>(s, kind, t, out);
@@ -156,16 +180,15 @@ void allCombinations(unsigned seed) {
   sph::verification::Results results;
   for (KernelKind kind : kinds) {
     double worst = 0.0;
-    for (int combo = 0; combo < 8; ++combo) {
-      sph::TermSwitches t{(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0};
+    for (int combo = 0; combo < menuSize; ++combo) {
+      const sph::TermSwitches t = switchesOf(combo);
       const double e = compare<D>(set, kind, t);
-      EXPECT_LE(e, tolerance) << sph::name(kind) << " artificial=" << t.artificialViscosity
-                              << " morris=" << t.morrisViscosity << " variable_h=" << t.variableH;
+      EXPECT_LE(e, tolerance) << sph::name(kind) << describe(t);
       worst = std::max(worst, e);
     }
     results.check("max |code - O(N^2) reference| / sum|pair terms|, " +
                       std::string(sph::name(kind)) + ", D=" + std::to_string(D) +
-                      ", all 8 term combinations",
+                      ", all 16 term combinations",
                   worst, "<=", tolerance, "summation round-off bound (n u sum|x_k|, Higham 2002)");
   }
 }
@@ -213,9 +236,9 @@ void keptLists(unsigned seed) {
   sph::verification::Results results;
   for (KernelKind kind : kinds) {
     double worst = 0.0, worstFar = 1e300;
-    for (int combo = 0; combo < 8; ++combo) {
-      sph::TermSwitches t{(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0};
-      sph::ForceEvaluation<D> forces(kind, t, 1.0);
+    for (int combo = 0; combo < menuSize; ++combo) {
+      const sph::TermSwitches t = switchesOf(combo);
+      sph::ForceEvaluation<D> forces(kind, t, parameters);
       sph::Derivatives<D> out;
       forces(set, out, sph::Vec<D>::Zero(), {skin, false});
       worst = std::max(worst, error<D>(set, kind, t, out));
@@ -229,7 +252,7 @@ void keptLists(unsigned seed) {
     EXPECT_LE(worst, tolerance) << what;
     EXPECT_GE(worstFar, 1e-3) << what;
     results.check("kept neighbour lists, moved within the skin: max error / sum|pair terms|, " +
-                      what + ", all 8 term combinations",
+                      what + ", all 16 term combinations",
                   worst, "<=", tolerance, "summation round-off bound, as the full build");
   }
 }
@@ -254,14 +277,14 @@ TEST(ForceEvaluation, KeptNeighbourListsMatchReference3D) {
 class ThreadCount : public ::testing::TestWithParam<int> {};
 TEST_P(ThreadCount, DoesNotChangeBits) {
   const auto set = randomSet<2>(13, GetParam());
-  const sph::TermSwitches all{true, true, true};
+  const sph::TermSwitches all{true, true, true, true};
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   sph::Derivatives<2> one;
-  sph::ForceEvaluation<2>(KernelKind::quadratic, all, 1.0)(set, one);
+  sph::ForceEvaluation<2>(KernelKind::quadratic, all, parameters)(set, one);
   for (int threads : {2, 3, 5}) {
     omp_set_num_threads(threads);
-    sph::ForceEvaluation<2> force(KernelKind::quadratic, all, 1.0);
+    sph::ForceEvaluation<2> force(KernelKind::quadratic, all, parameters);
     for (int evaluation = 0; evaluation < 2; ++evaluation) {
       sph::Derivatives<2> many;
       force(set, many);

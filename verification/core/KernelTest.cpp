@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 #include "Results.hpp"
@@ -166,3 +167,8 @@ TEST(Kernels, SlopeAtOrigin) {
 }
 
 }  // namespace
+
+// An enum value the code does not know is an error, never the last kernel (exhaustive switches).
+TEST(Kernels, UnknownKindIsAnError) {
+  EXPECT_THROW(sph::kernelValue<2>(static_cast<sph::KernelKind>(7), 0.1, 1.0), std::logic_error);
+}

@@ -1,8 +1,9 @@
 #pragma once
 // One pass of every enabled term over all fluid particles: the rates of change of density,
-// velocity and smoothing length. The scene's choice of kernel and terms picks one of the
-// pre-built pair loops at construction; a term the scene does not enable is not compiled into
-// the loop it runs (no per-pair flag test, no virtual call).
+// velocity and smoothing length. The terms are small types (sph/terms/); the scene's choice of
+// kernel and optional terms picks one of the pair loops built for every subset of them
+// (terms/Menu.hpp) at construction: a term the scene does not enable is not compiled into the
+// loop it runs (no per-pair flag test, no virtual call).
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,14 +12,21 @@
 #include "sph/CellList.hpp"
 #include "sph/InteractionSet.hpp"
 #include "sph/Kernels.hpp"
+#include "sph/terms/PairValues.hpp"
 
 namespace sph {
 
+// The optional terms, in the order of terms::OptionalTerms.
 struct TermSwitches {
   bool artificialViscosity = false;  // Lobovsky & Kren eq. (10)
   bool morrisViscosity = false;      // eq. (9)
   bool variableH = false;            // eq. (13)
+  bool densityDiffusion = false;     // Molteni & Colagrossi (2009)
 };
+// The menu entry of a choice of optional terms (bit k: the k-th).
+unsigned menuIndex(TermSwitches);
+// The operations a pair of that entry's terms takes (quadratic kernel; terms::Flops).
+terms::Flops pairFlops(TermSwitches);
 
 template <int D>
 struct Derivatives {
@@ -39,7 +47,8 @@ struct NeighbourLists {
 template <int D>
 class ForceEvaluation {
  public:
-  ForceEvaluation(KernelKind kernel, TermSwitches terms, double beta);
+  ForceEvaluation(KernelKind kernel, TermSwitches terms, const terms::TermParameters& parameters);
+  ForceEvaluation(KernelKind kernel, TermSwitches terms, double beta);  // the paper's terms only
 
   // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt;
   // `g`, a uniform body acceleration, is added to dv/dt as the rates are written (F/rho in eq.
@@ -59,11 +68,11 @@ class ForceEvaluation {
                      // step)
 
  private:
-  using Loop = void (*)(const InteractionSet<D>&, double beta, const Vec<D>& g, NeighbourLists,
-                        Workspace&, Derivatives<D>&);
+  using Loop = void (*)(const terms::TermParameters&, const InteractionSet<D>&, const Vec<D>& g,
+                        NeighbourLists, Workspace&, Derivatives<D>&);
   KernelKind kernel_;
   TermSwitches terms_;
-  double beta_;
+  terms::TermParameters parameters_;
   Loop loop_;
   std::shared_ptr<Workspace> work_;
 };

@@ -4,6 +4,8 @@
 // loop inlines it; the scene picks one by name (KernelKind).
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace sph {
@@ -141,9 +143,11 @@ decltype(auto) withKernel(KernelKind kind, F&& f) {
       return f(QuadraticKernel{});
     case KernelKind::cubic_spline:
       return f(CubicSplineKernel{});
-    default:
+    case KernelKind::wendland_c2:
       return f(WendlandC2Kernel{});
   }
+  throw std::logic_error("withKernel: KernelKind " + std::to_string(static_cast<int>(kind)) +
+                         " is not a kernel this build knows");
 }
 
 // Value of `kind`'s kernel, for code outside the pair loop (probes, tests).

@@ -1,0 +1,102 @@
+#pragma once
+// What a pair term reads and writes. A term is a small type (one header here) with
+//   name     the run file's word for it ("" for a term the simulation names itself),
+//   reads    which of the pair's shared values it needs beyond r_ij, v_ij and the kernel,
+//   writes   which of the pair's sums it adds to,
+//   flops    its operations a pair, counted from its source (perf: the per-term cost table),
+//   pair(p, s)    its share of one pair: p the pair's values, s the sums it adds to,
+// and optionally finish(f, x) for the per-particle step after all pairs, and a constructor
+// from TermParameters where it has parameters. The pair values are written over two value
+// types: S for particle i's fields and V for j's and the pair's, so that the same function
+// serves one pair (S = V = double) or several at once (V a vector of pairs).
+//
+// Every term of this solver is symmetric in the sense of Newton's third law: what the pair
+// adds to j follows from what it adds to i with i and j exchanged, so each pair is visited once
+// and both shares come from the same pair values.
+#include <string_view>
+
+namespace sph::terms {
+
+// One particle of the pair.
+template <class T>
+struct Side {
+  T m;          // mass
+  T rho;        // density
+  T rhoInv;     // 1 / rho
+  T pOverRho2;  // p / rho^2 (Tait, eq. 8)
+  T mu;         // dynamic viscosity
+};
+
+// A particle's side from its state: the factors computed once per particle and evaluation.
+inline Side<double> sideOf(double m, double rho, double p, double mu) {
+  const double rhoInv = 1.0 / rho;
+  return {m, rho, rhoInv, p * rhoInv * rhoInv, mu};
+}
+
+// The pair (i, j), r_ij = x_i - x_j, v_ij = v_i - v_j, within the kernel's support.
+template <class S, class V>
+struct PairValues {
+  Side<S> i;
+  Side<V> j;
+  V rx, ry, rz;  // r_ij (zero beyond D)
+  V vx, vy, vz;  // v_ij
+  V r2;          // |r_ij|^2
+  V vr;          // v_ij . r_ij
+  V hSum;        // h_i + h_j = 2 h_ij
+  V hSum2;       // (h_i + h_j)^2
+  V F;           // grad_i W_ij = F r_ij: F = (1/r) dW/dr at h_ij (Kernels.hpp)
+  V rEta2Inv;    // 1 / (r_ij^2 + eta^2), where a term reads it (Reads::etaInverse)
+  V rhoSumInv;   // 1 / (rho_i + rho_j), where a term reads it (Reads::rhoSumInverse)
+};
+
+// The anti-crossing term of the viscosities (DESIGN.md 1): eta^2 = 0.01 h_ij^2, as a fraction
+// of (h_i + h_j)^2 = 4 h_ij^2. (The paper prints eta = 0.01 H^2.)
+inline constexpr double etaSquaredOfHSum2 = 0.0025;
+
+// What one pair adds, before the driver sums it: to i's and to j's d rho/dt, to the sums of
+// eq. (13) (h/D times the sum is dh/dt), and eq. (12)'s pair force per unit of the two masses,
+// Q = bracket F r_ij - viscous v_ij: dv_i/dt gets -m_j Q and dv_j/dt gets +m_i Q. Each starts at
+// -0, so that the first term's share is its value exactly (-0 + x = x for every x).
+template <class V>
+struct PairSums {
+  V rhoI = -V{}, rhoJ = -V{};  // d rho/dt
+  V hI = -V{}, hJ = -V{};      // the sums of eq. (13)
+  V bracket = -V{};            // (p_i/rho_i^2 + p_j/rho_j^2 + Pi_ij) of eq. (12)
+  V viscous = -V{};            // the factor of v_ij (Morris et al. 1997, eq. 9)
+};
+
+struct Reads {
+  bool etaInverse = false, rhoSumInverse = false;
+};
+struct Writes {
+  bool density = false, smoothingLength = false, bracket = false, viscous = false;
+};
+
+// Operations a pair (add, sub, mul, compare-select, div, sqrt one each): `shared` once for the
+// pair, `sided` once for each of its two particles.
+struct Flops {
+  int shared = 0, sided = 0;
+};
+
+// The scene's values of the terms' parameters.
+struct TermParameters {
+  double beta = 0.0;            // artificial viscosity, eq. (10)
+  double diffusionDelta = 0.0;  // density diffusion's delta (Molteni & Colagrossi 2009)
+  double soundSpeed = 0.0;      // c0 [m/s], of density diffusion
+};
+
+// A fluid particle's rates once all its pairs are summed, for the terms' finish steps: hSum is
+// eq. (13)'s sum, dhdt starts at zero, dvdt holds the pairs' part.
+template <class Vec>
+struct ParticleRates {
+  double drhodt, hSum, dhdt;
+  Vec dvdt;
+};
+// What a finish step may read of its particle and of the evaluation.
+template <class Vec>
+struct ParticleState {
+  double h;
+  Vec g;  // the uniform body acceleration
+};
+
+}  // namespace sph::terms
