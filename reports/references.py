@@ -9,7 +9,7 @@ Scaling constants come from the run file, never from here:
                  Koshizuka & Oka, initial column height H for Lobovsky and Buchner)
   scale_height   probe attribute [m], optional: initial column height for the Martin & Moyce height
                  (default: the probe's first sample)
-  gravity        probe or root attribute [m/s^2] (a scalar or a vector; default 9.81, said in the legend)
+  gravity        probe or root attribute [m/s^2] (a scalar or a vector); the solver writes the root attribute
   density / rho0 probe attribute `density` or root attribute `rho0` [kg/m^3], for pressures
 """
 from __future__ import annotations
@@ -22,7 +22,6 @@ from pathlib import Path
 import numpy as np
 
 DATA_DIR = Path(__file__).resolve().parent.parent / "reference_data"
-STANDARD_GRAVITY = 9.81
 
 
 @dataclass(frozen=True)
@@ -102,14 +101,15 @@ def keys_for(probe) -> tuple:
     return PROBE_REFERENCES.get(probe.name, ())
 
 
-def _gravity(probe, run_attrs) -> tuple:
+def _gravity(probe, run_attrs):
+    """|g| from the probe's or else the run's `gravity` attribute; None when neither gives a positive value."""
     for source in (probe.attrs, run_attrs):
         g = source.get("gravity")
         if g is not None:
             g = float(np.linalg.norm(np.atleast_1d(np.asarray(g, dtype=float))))
             if g > 0:
-                return g, ""
-    return STANDARD_GRAVITY, f"g = {STANDARD_GRAVITY} assumed"
+                return g
+    return None
 
 
 def scale_probe(run, probe, key: str):
@@ -121,7 +121,9 @@ def scale_probe(run, probe, key: str):
     length = probe.attrs.get("scale_length")
     if not isinstance(length, (int, float)) or not length > 0:
         return None, None, "probe has no `scale_length` attribute"
-    g, note = _gravity(probe, run.attrs)
+    g = _gravity(probe, run.attrs)
+    if g is None:
+        return None, None, "no positive `gravity` probe or root attribute"
     t_star = np.asarray(t, dtype=float) * math.sqrt(ref.time_g_factor * g / length)
     v = probe.values
     if ref.value_scaling == "length":
@@ -134,7 +136,7 @@ def scale_probe(run, probe, key: str):
         if not isinstance(rho, (int, float)) or not rho > 0:
             return None, None, "no `density` probe attribute or `rho0` root attribute"
         v_star = v / (rho * g * length)
-    return t_star, v_star, note
+    return t_star, v_star, ""
 
 
 def reference_error(run, probe, key: str):

@@ -1,11 +1,14 @@
 """Read the solver's HDF5 run files and the GoogleTest JSON results (layout: reports/SCHEMA.md).
 
-This module only reads; it holds no thresholds, no references and no plotting.
+The one reader of run files: the report (reports/), validation/validate.py and validation/stability/sweep.py
+all read through `read_run`. Values the run file stores (rho0, g, the scene and its parameters) are taken from it
+here, never restated by a caller. This module only reads; it holds no thresholds, no references and no plotting.
 """
 from __future__ import annotations
 
 import json
 import re
+import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -56,6 +59,8 @@ class Run:
     probes: list = field(default_factory=list)
     snapshots: list = field(default_factory=list)
     metrics: dict = field(default_factory=dict)
+    scene_text: str = ""  # the dataset /scene: the scene file the run was made from
+    scene: dict = field(default_factory=dict)  # scene_text parsed (TOML)
     read_error: str = ""
 
     @property
@@ -67,19 +72,71 @@ class Run:
         """Kernel and terms: what distinguishes one method from another in a speed/accuracy chart."""
         return f"{self.attrs.get('kernel', '?')} [{self.attrs.get('terms', '?')}]"
 
+    def _number(self, where: dict, key: str, what: str) -> float:
+        value = where.get(key)
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            raise KeyError(f"{self.path}: {what} `{key}` missing or not a number (reports/SCHEMA.md)")
+        return float(value)
+
+    @property
+    def rho0(self) -> float:
+        """Root attribute `rho0`: the first phase's rest density [kg/m^3]."""
+        return self._number(self.attrs, "rho0", "root attribute")
+
+    @property
+    def gravity(self) -> float:
+        """Root attribute `gravity`: |body acceleration| [m/s^2]."""
+        return self._number(self.attrs, "gravity", "root attribute")
+
+    @property
+    def dx(self) -> float:
+        """The scene's particle spacing, `numerics.dx` of /scene [m]."""
+        return self._number(self.scene.get("numerics", {}), "dx", "scene key numerics.")
+
+    @property
+    def time(self) -> np.ndarray:
+        return np.asarray(self.series["time"], dtype=float)
+
+    def probe(self, name: str) -> Probe:
+        """The probe /series/probe_<name>; KeyError naming the run when it has none."""
+        for p in self.probes:
+            if p.name == name:
+                return p
+        raise KeyError(f"{self.path}: no probe `{name}` in /series (probes: {[p.name for p in self.probes]})")
+
+    def phases(self) -> dict:
+        """{phase name: its [[phase]] table of the scene} in the scene's order (the phase index of snapshots)."""
+        return {p["name"]: p for p in self.scene.get("phase", [])}
+
+    def snapshot_at(self, t: float) -> Snapshot:
+        return min(self.snapshots, key=lambda s: abs(s.time - t))
+
     def snapshot_fields(self, snap: Snapshot, names=("position", "pressure", "phase")) -> dict:
         with h5py.File(self.path, "r") as f:
             group = f["snapshots"][snap.key]
             return {n: group[n][()] for n in names if n in group}
 
+    def each_snapshot(self, names=("position", "phase")):
+        """(snapshot, {field: array}) for every snapshot in order, the file opened once."""
+        with h5py.File(self.path, "r") as f:
+            for snap in self.snapshots:
+                group = f["snapshots"][snap.key]
+                yield snap, {n: group[n][()] for n in names if n in group}
 
-def read_run(path: Path, root: Path) -> Run:
-    """Read one run file. A file that cannot be read comes back with `read_error` set."""
+
+def read_run(path: Path, root: Path | None = None) -> Run:
+    """Read one run file (labelled relative to `root`, default its directory). A file that cannot be read comes
+    back with `read_error` set."""
+    path = Path(path)
+    root = path.parent if root is None else Path(root)
     label = str(path.relative_to(root).with_suffix("")) if path.is_relative_to(root) else path.stem
     run = Run(path=path, label=label, attrs={})
     try:
         with h5py.File(path, "r") as f:
             run.attrs = _attrs(f)
+            if "scene" in f:
+                run.scene_text = str(_plain(f["scene"][()]))
+                run.scene = tomllib.loads(run.scene_text)
             if "series" in f:
                 for name, dset in f["series"].items():
                     if not isinstance(dset, h5py.Dataset):
@@ -95,7 +152,7 @@ def read_run(path: Path, root: Path) -> Run:
                                                   bool(a.get("last_good", 0))))
             if "metrics" in f:
                 run.metrics = _attrs(f["metrics"])
-    except (OSError, KeyError, ValueError, TypeError) as err:
+    except (OSError, KeyError, ValueError, TypeError) as err:  # tomllib.TOMLDecodeError is a ValueError
         run.read_error = f"{type(err).__name__}: {err}"
     return run
 

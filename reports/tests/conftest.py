@@ -10,10 +10,27 @@ import pytest
 REPORTS = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(REPORTS))
 
+# The synthetic runs' body acceleration and first rest density: written into each file (root attributes
+# `gravity`, `rho0` and the scene text), which is where the code under test must take them from.
+GRAVITY = 9.81
+RHO0 = 1000.0
+
+
+def scene_text(scene_name: str, phases, dx: float, gravity: float, rho0: float, kernel: str) -> str:
+    """A scene file as `sph run` stores it in /scene (solver/SCENES.md), with the keys the readers use."""
+    lines = [f'name = "{scene_name}"', "dimension = 2", ""]
+    for k, ph in enumerate(phases):
+        lines += ["[[phase]]", f'name = "{ph}"', f"rho0 = {rho0 * (1 + 0.5 * k)!r}", "c0 = 24.4", ""]
+    lines += ["[physics]", f"gravity = [0.0, {-gravity!r}]", "", "[numerics]", f'kernel = "{kernel}"',
+              f"dx = {dx!r}", "h_over_dx = 1.33", "end_time = 0.4", ""]
+    return "\n".join(lines)
+
 
 def write_run(path: Path, scene_name: str, *, status="stable", max_volume_variation=0.001, phases=("water",),
-              kernel="cubic_spline", wall_time_s=12.5, n=120, dx=0.01, probes=(), snapshots=3):
-    """A run file following reports/SCHEMA.md. `probes`: (name, values-function of t, extra attributes)."""
+              kernel="cubic_spline", wall_time_s=12.5, n=120, dx=0.01, probes=(), snapshots=3,
+              gravity=GRAVITY, rho0=RHO0):
+    """A run file following reports/SCHEMA.md. `probes`: (name, values-function of t, extra attributes).
+    `gravity` or `rho0` None leaves that root attribute out (a file that breaks the schema)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     rng = np.random.default_rng(7)
     nt = 41
@@ -31,7 +48,12 @@ def write_run(path: Path, scene_name: str, *, status="stable", max_volume_variat
             f.attrs[key] = value
         f.attrs["threads"] = np.int64(4)
         f.attrs["dimension"] = np.int64(2)
-        f.create_dataset("scene", data=f'name = "{scene_name}"\n')
+        if gravity is not None:
+            f.attrs["gravity"] = float(gravity)
+        if rho0 is not None:
+            f.attrs["rho0"] = float(rho0)
+        g0, r0 = GRAVITY if gravity is None else gravity, RHO0 if rho0 is None else rho0
+        f.create_dataset("scene", data=scene_text(scene_name, phases, dx, g0, r0, kernel))
         s = f.create_group("series")
         s["time"] = t
         s["dt"] = np.full(nt, 1e-4)
@@ -39,8 +61,8 @@ def write_run(path: Path, scene_name: str, *, status="stable", max_volume_variat
         s["dt_limiter"] = np.zeros(nt, dtype=np.int32)
         s["kinetic_energy"] = t ** 2
         s["max_speed"] = 2.0 * t
-        s["rho_min"] = np.full(nt, 995.0)
-        s["rho_max"] = np.full(nt, 1005.0)
+        s["rho_min"] = np.full(nt, 0.995 * r0)
+        s["rho_max"] = np.full(nt, 1.005 * r0)
         s["volume_error"] = max_volume_variation * np.sin(np.linspace(0, np.pi / 2, nt))
         if len(phases) > 1:
             for k, ph in enumerate(phases):
@@ -61,10 +83,10 @@ def write_run(path: Path, scene_name: str, *, status="stable", max_volume_variat
             pos[:, 1] = (np.arange(n) // 12) * dx
             g["position"] = pos
             g["velocity"] = np.zeros((n, 3))
-            g["density"] = np.full(n, 1000.0)
-            g["pressure"] = 1000.0 * 9.81 * (pos[:, 1].max() - pos[:, 1])
+            g["density"] = np.full(n, r0)
+            g["pressure"] = r0 * g0 * (pos[:, 1].max() - pos[:, 1])
             g["h"] = np.full(n, 1.33 * dx)
-            g["mass"] = np.full(n, 1000.0 * dx * dx)
+            g["mass"] = np.full(n, r0 * dx * dx)
             g["phase"] = (np.arange(n) % 12 >= 6).astype(np.int32) if len(phases) > 1 else np.zeros(n, np.int32)
         m = f.create_group("metrics")
         m.attrs["wall_time_s"] = float(wall_time_s)

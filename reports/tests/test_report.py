@@ -3,6 +3,7 @@ import json
 import re
 import xml.etree.ElementTree as ET
 
+import h5py
 import numpy as np
 import numpy.testing as npt
 import pytest
@@ -11,13 +12,14 @@ import analysis
 import criteria
 import references
 import vv_report
+from conftest import GRAVITY
 from runfile import family, read_run
 
 A = 0.05  # column width of the synthetic dam break [m]
 
 
 def front(t):
-    return A * (1.0 + 0.4 * (t * np.sqrt(2 * 9.81 / A)) ** 1.5)
+    return A * (1.0 + 0.4 * (t * np.sqrt(2 * GRAVITY / A)) ** 1.5)
 
 
 def report(tmp_path, runs, results=None, *extra):
@@ -212,16 +214,54 @@ def test_references_load_with_their_scaling():
 
 
 def test_scaled_probe_and_missing_attributes(tmp_path, make_run):
-    path = make_run(tmp_path / "r.h5", "dam_break", probes=[
+    # g = 5 m/s^2, not the Earth's: the scaling must take g from the run file.
+    path = make_run(tmp_path / "r.h5", "dam_break", gravity=5.0, probes=[
         ("surge_front", front, {"type": "front", "units": "m", "scale_length": A}),
         ("p_sensor2", lambda t: 0 * t, {"type": "pressure", "units": "Pa"})])
     run = read_run(path, tmp_path)
-    front_probe, pressure = sorted(run.probes, key=lambda p: p.name != "surge_front")
+    front_probe, pressure = run.probe("surge_front"), run.probe("p_sensor2")
     ts, zs, note = references.scale_probe(run, front_probe, "martin_moyce_1952_front")
     npt.assert_allclose(zs[0], 1.0, rtol=1e-12, atol=0)
-    npt.assert_allclose(ts[-1], 0.4 * np.sqrt(2 * 9.81 / A), rtol=1e-12, atol=0)
-    assert "9.81 assumed" in note
-    assert references.scale_probe(run, pressure, "lobovsky_2014_sensor2")[0] is None
+    npt.assert_allclose(ts[-1], 0.4 * np.sqrt(2 * 5.0 / A), rtol=1e-12, atol=0)
+    assert note == ""
+    assert references.scale_probe(run, pressure, "lobovsky_2014_sensor2")[0] is None  # no scale_length
+
+    no_g = read_run(make_run(tmp_path / "no_g.h5", "dam_break", gravity=None, probes=[
+        ("surge_front", front, {"type": "front", "units": "m", "scale_length": A})]), tmp_path)
+    ts, zs, note = references.scale_probe(no_g, no_g.probe("surge_front"), "martin_moyce_1952_front")
+    assert ts is None and "gravity" in note
+
+
+def test_reader_gives_what_the_run_file_stores(tmp_path, make_run):
+    path = make_run(tmp_path / "runs" / "two_fluids.h5", "two_fluids", phases=("light", "heavy"), dx=0.004,
+                    gravity=3.5, rho0=998.0, probes=[("p", lambda t: 2 * t, {"type": "pressure", "units": "Pa"})])
+    run = read_run(path)
+    assert run.read_error == "" and run.label == "two_fluids"
+    npt.assert_allclose([run.gravity, run.rho0, run.dx], [3.5, 998.0, 0.004], rtol=0, atol=0)
+    assert list(run.phases()) == ["light", "heavy"] and run.phases()["heavy"]["rho0"] == 1497.0
+    npt.assert_allclose(run.scene["physics"]["gravity"], [0.0, -3.5], rtol=0, atol=0)
+    npt.assert_allclose(run.probe("p").values, 2 * run.time, rtol=0, atol=0)
+    with pytest.raises(KeyError, match="no probe `q`"):
+        run.probe("q")
+    fields = list(run.each_snapshot(("position", "mass")))
+    assert [s.key for s, _ in fields] == ["00000", "00001", "00002"]
+    npt.assert_allclose(fields[0][1]["mass"], 998.0 * 0.004 ** 2, rtol=1e-15, atol=0)
+    assert run.snapshot_at(0.39) is run.snapshots[-1]
+
+    bare = read_run(make_run(tmp_path / "bare.h5", "bare", gravity=None, rho0=None))
+    with pytest.raises(KeyError, match="root attribute `gravity` missing"):
+        bare.gravity
+    with pytest.raises(KeyError, match="root attribute `rho0` missing"):
+        bare.rho0
+
+
+def test_unreadable_scene_text_is_a_read_error(tmp_path, make_run):
+    path = make_run(tmp_path / "r.h5", "dam_break")
+    with h5py.File(path, "a") as f:
+        del f["scene"]
+        f["scene"] = "name = = broken"
+    run = read_run(path)
+    assert "TOMLDecodeError" in run.read_error
 
 
 @pytest.mark.parametrize("measured, comparison, threshold, expected", [
@@ -244,8 +284,6 @@ def test_fit_order_needs_two_points():
 
 
 def test_fixed_length_string_attributes_as_cpp_writes_them(tmp_path, make_run):
-    import h5py
-
     path = make_run(tmp_path / "runs" / "dam_break.h5", "dam_break")
     with h5py.File(path, "a") as f:
         for key in ("status", "scene_name", "kernel"):

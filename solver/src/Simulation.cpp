@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "sph/EquationOfState.hpp"
 #include "sph/InitialParticles.hpp"
@@ -22,11 +24,15 @@ std::string_view name(FailureCause c) {
       return "escaped_domain";
     case FailureCause::wall_penetration:
       return "wall_penetration";
+    case FailureCause::dt_collapse:
+      return "dt_collapse";
     case FailureCause::energy_growth:
       return "energy_growth";
-    default:
-      return "dt_collapse";
   }
+  // No default: -Wswitch names an enumerator missing above, and any other value is a bug
+  // (an error here), never the last case.
+  throw std::logic_error("name(FailureCause): unknown value " +
+                         std::to_string(static_cast<int>(c)));
 }
 
 namespace {

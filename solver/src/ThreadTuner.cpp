@@ -1,6 +1,8 @@
 #include "sph/ThreadTuner.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace sph {
 
@@ -24,9 +26,13 @@ int ThreadTuner::threads() const {
       return max_;
     case Phase::trialOne:
       return 1;
-    default:
+    case Phase::run:
       return choice_;
   }
+  // No default: -Wswitch names an enumerator missing above, and any other value is a bug
+  // (an error here), never the last case.
+  throw std::logic_error("ThreadTuner::Phase: unknown value " +
+                         std::to_string(static_cast<int>(phase_)));
 }
 
 void ThreadTuner::took(double seconds) {

@@ -19,12 +19,16 @@ Known failure modes, each from a small scene of its own:
                        particle that ended a step beyond the wall and was reflected back (wall_reflections);
   packing              Cartesian against packed start of Monaghan's elliptical drop (elliptical_drop.toml.in):
                        inaccurate when a semi-axis is off the ODE by more than 1 % at t A0 = 0.76 (our
-                       threshold; the tests measure 1.3 % Cartesian and 0.3 % packed with Wendland);
+                       threshold; the tests measure 1.3 % Cartesian and 0.3 % packed with Wendland); the
+                       ODE's solution is the C++ one the tests use (the tool elliptical_drop_ode);
   high-Mach density    the same impact: max |rho/rho0 - 1| above 1 %, the density variation that the
                        c0 >= 10 max|v| rule is chosen to keep (Monaghan 1994).
 
-Usage: sweep.py --sph BIN --out DIR [--sweep NAME ...] [--jobs 2]
-Writes DIR/<sweep>.json in the report's stability format and prints a table.
+Usage: sweep.py --sph BIN --out DIR [--sweep NAME ...] [--jobs 2] [--drop-ode BIN]
+Writes DIR/<sweep>.json in the report's stability format and prints a table. --drop-ode (default: the build tree's
+verification/flows/elliptical_drop_ode beside BIN's solver/) is needed by the elliptical-drop sweep only.
+Run files are read with reports/runfile.py, and rho0, g and the scene's parameters are taken from them or, before
+a run, from the filled template; the numbers here are the swept settings and the thresholds.
 """
 import argparse
 import concurrent.futures
@@ -33,18 +37,34 @@ import math
 import subprocess
 import sys
 import tempfile
+import tomllib
 from pathlib import Path
 
-import h5py
-
 HERE = Path(__file__).resolve().parent
-G, H = 9.81, 0.25
+sys.path.insert(0, str(HERE.parent.parent / "reports"))
+from runfile import read_run  # noqa: E402  (the one run-file reader)
+
 KERNELS = ["quadratic", "cubic_spline", "wendland_c2"]
 # The paper's dam break: c0 = 24.4 m/s, beta = 1, h = 1.33 dx, CFL 0.25 (Morris et al. 1997).
 BASE = dict(c0=24.4, beta=1.0, variable_h="true", kernel="quadratic", dx=0.02, h_over_dx=1.33,
             cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0, initial="lattice", packing="")
-RHO_G_BOX = 1000.0 * G * 0.2  # hydrostatic pressure at the bottom of the closed box [Pa]
-IMPACT_SPEED = 2.0  # block_impact.toml.in [m/s]
+
+
+def template_scene(template: str, **params) -> dict:
+    """The scene a template gives with BASE and `params` filled in, parsed: where the sweeps take the templates'
+    fixed parameters (rho0, g, the block's size and speed) from."""
+    return tomllib.loads((HERE / f"{template}.toml.in").read_text().format(**dict(BASE, name=template, **params)))
+
+
+def gravity(scene: dict) -> float:
+    """|g| of a scene's [physics] gravity (zero when the scene has none)."""
+    return math.hypot(*scene.get("physics", {}).get("gravity", [0.0]))
+
+
+def block_height(scene: dict, k: int = 0) -> float:
+    """Height of the scene's k-th [[fluid]] rectangle [m]."""
+    b = scene["fluid"][k]
+    return float(b["upper"][1] - b["lower"][1])
 
 
 def sweeps():
@@ -73,7 +93,8 @@ def sweeps():
         "hydrostatic_tank", "h/dx", "kernel",
         [(r, k, dict(h_over_dx=r, kernel=kern, end_time=1.0)) for r in ratios
          for k, kern in enumerate(["quadratic", "wendland_c2"])], ["quadratic", "wendland_c2"])
-    vmax = math.sqrt(2 * G * H)  # free-fall speed over the column height
+    dam = template_scene("dam_break")
+    vmax = math.sqrt(2 * gravity(dam) * block_height(dam))  # free-fall speed over the column height
     mults = [3, 5, 7, 10, 14, 20]
     out["mach_dam_break"] = ("dam_break", "c0 / sqrt(2 g H)", "max volume variation [%]",
                              [(m, None, dict(c0=round(m * vmax, 4))) for m in mults], None)
@@ -88,13 +109,16 @@ def sweeps():
         "elliptical_drop", "initial particles (0 Cartesian lattice, 1 packed)", "kernel",
         [(i, k, dict(initial=init, kernel=kern, h_over_dx=2.0, packing=packing if init == "packed" else ""))
          for i, init in enumerate(("lattice", "packed")) for k, kern in enumerate(KERNELS)], KERNELS)
+    box = template_scene("closed_box")
+    rho_g_box = box["phase"][0]["rho0"] * gravity(box) * block_height(box)  # hydrostatic p at the bottom [Pa]
     out["tensile_instability_closed_box"] = (
         "closed_box", "p0 / (rho0 g H)   (p < 0 everywhere below -1)", "kernel",
-        [(r, k, dict(p0=round(r * RHO_G_BOX, 3), kernel=kern, c0=20.0, beta=0.1, variable_h="false", dx=0.01,
+        [(r, k, dict(p0=round(r * rho_g_box, 3), kernel=kern, c0=20.0, beta=0.1, variable_h="false", dx=0.01,
                      end_time=1.0))
          for r in (-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0) for k, kern in enumerate(KERNELS)], KERNELS)
     machs = [0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8]
-    impact = [(m, b, dict(c0=round(IMPACT_SPEED / m, 4), beta=b, variable_h="false", dx=0.005, end_time=0.075))
+    impact_speed = math.hypot(*template_scene("block_impact")["fluid"][0]["velocity"])  # [m/s]
+    impact = [(m, b, dict(c0=round(impact_speed / m, 4), beta=b, variable_h="false", dx=0.005, end_time=0.075))
               for m in machs for b in (0.0, 1.0)]
     out["wall_penetration_block_impact"] = ("block_impact", "impact Mach number U / c0", "artificial viscosity beta",
                                             impact, None)
@@ -111,33 +135,31 @@ def min_pair_distance(positions):
     return float(np.sqrt(d2.min()))
 
 
-def ellipse_ode(t_end, a0=1.0, A0=100.0, steps=4000):
-    """Monaghan (1994): da/dt = A a, db/dt = -A b, dA/dt = A^2 (b^2 - a^2) / (a^2 + b^2); classical RK4."""
-    def rhs(y):
-        a, b, A = y
-        return (A * a, -A * b, A * A * (b * b - a * a) / (a * a + b * b))
-    y, dt = (a0, a0, A0), t_end / steps
-    for _ in range(steps):
-        k1 = rhs(y)
-        k2 = rhs(tuple(v + 0.5 * dt * k for v, k in zip(y, k1)))
-        k3 = rhs(tuple(v + 0.5 * dt * k for v, k in zip(y, k2)))
-        k4 = rhs(tuple(v + dt * k for v, k in zip(y, k3)))
-        y = tuple(v + dt / 6 * (p + 2 * q + 2 * r + s) for v, p, q, r, s in zip(y, k1, k2, k3, k4))
-    return y[0], y[1]
+def drop_ode(tool, A0: float, R: float, t: float) -> tuple:
+    """Semi-axes (a, b) of Monaghan's (1994) drop at t, from verification/flows/EllipticalDropOde.hpp (GSL rk8pd,
+    the solution the GoogleTest cases use and check) through its tool. Why the tool and not a Python solver
+    (a hand-written RK4 was here; scipy's solve_ivp would do): either is a second solution of the same ODE that
+    nothing checks against the first, and scipy a dependency for one ODE; the tool keeps one."""
+    proc = subprocess.run([str(tool), repr(A0), repr(R), repr(t)], capture_output=True, text=True, timeout=60)
+    if proc.returncode != 0:
+        raise RuntimeError(f"{tool}: {proc.stderr.strip()}")
+    header, line = proc.stdout.split()[:2]
+    row = dict(zip(header.split(","), map(float, line.split(","))))
+    return row["a"], row["b"]
 
 
-def semi_axis_error(x, volume, t):
+def semi_axis_error(x, volume, ode_axes):
     """max |a/a_ode - 1|, |b/b_ode - 1| with a = 2 sqrt(<x^2>) about the centroid, volume-weighted (a uniform
     ellipse has <x^2> = a^2/4), as verification/flows/EllipticalDrop*.cpp measure it."""
     w = volume / volume.sum()
     c = (w[:, None] * x).sum(axis=0)
     a = 2 * math.sqrt((w * (x[:, 0] - c[0]) ** 2).sum())
     b = 2 * math.sqrt((w * (x[:, 1] - c[1]) ** 2).sum())
-    a_ode, b_ode = ellipse_ode(t)
+    a_ode, b_ode = ode_axes
     return max(abs(a / a_ode - 1), abs(b / b_ode - 1))
 
 
-def run_point(sph, template, params, workdir):
+def run_point(sph, template, params, workdir, drop_tool=None):
     p = dict(BASE, **params)
     name = template + "_" + "_".join(f"{k}{v}" for k, v in sorted(params.items()) if k != "packing")
     p["name"] = name
@@ -148,32 +170,33 @@ def run_point(sph, template, params, workdir):
     h5 = Path(workdir) / f"{name}.h5"
     if proc.returncode == 2 or not h5.exists():
         return dict(outcome="unstable", cause="rejected", message=proc.stderr.strip())
-    with h5py.File(h5, "r") as f:
-        status = f.attrs["status"]
-        status = status.decode() if isinstance(status, bytes) else str(status)
-        cause = f.attrs.get("failure_cause", b"")
-        cause = cause.decode() if isinstance(cause, bytes) else str(cause)
-        m = f["metrics"].attrs
-        res = dict(wall_time=float(m["wall_time_s"]), steps=int(m["steps"]),
-                   volume_variation=float(m["max_volume_variation"]),
-                   wall_reflections=int(m.get("wall_reflections", 0)), end_time=float(m["end_time"]))
-        speed = f["series/max_speed"][:]
-        res["final_max_speed"] = float(speed[-1]) if len(speed) else float("nan")
-        rho = [f["series/rho_min"][:], f["series/rho_max"][:]]
-        if len(rho[0]):
-            res["density_error_pct"] = 100 * max(abs(rho[0].min() / 1000.0 - 1), abs(rho[1].max() / 1000.0 - 1))
-        snaps = sorted(f["snapshots"])
-        if template == "elliptical_drop" and snaps:
-            last = f["snapshots"][snaps[-1]]
-            res["semi_axis_error"] = semi_axis_error(last["position"][:, :2], last["mass"][:] / last["density"][:],
-                                                     float(last.attrs["time"]))
-        if template == "closed_box" and snaps:
-            res["min_pair_distance_dx"] = min_pair_distance(f["snapshots"][snaps[-1]]["position"][:, :2]) / p["dx"]
+    run = read_run(h5)
+    if run.read_error:
+        return dict(outcome="unstable", cause="unreadable run file", message=run.read_error)
+    status, cause, m = run.attrs["status"], run.attrs.get("failure_cause", ""), run.metrics
+    res = dict(wall_time=float(m["wall_time_s"]), steps=int(m["steps"]),
+               volume_variation=float(m["max_volume_variation"]),
+               wall_reflections=int(m.get("wall_reflections", 0)), end_time=float(m["end_time"]))
+    speed = run.series["max_speed"]
+    res["final_max_speed"] = float(speed[-1]) if len(speed) else float("nan")
+    rho_min, rho_max = run.series["rho_min"], run.series["rho_max"]
+    if len(rho_min):
+        res["density_error_pct"] = 100 * max(abs(rho_min.min() / run.rho0 - 1), abs(rho_max.max() / run.rho0 - 1))
+    if template == "elliptical_drop" and run.snapshots:
+        last = run.snapshots[-1]
+        f = run.snapshot_fields(last, ("position", "mass", "density"))
+        drop = run.scene["fluid"][0]
+        axes = drop_ode(drop_tool, float(drop["velocity_gradient"][0][0]), float(drop["radius"]), last.time)
+        res["semi_axis_error"] = semi_axis_error(f["position"][:, :2], f["mass"] / f["density"], axes)
+    if template == "closed_box" and run.snapshots:
+        pos = run.snapshot_fields(run.snapshots[-1], ("position",))["position"]
+        res["min_pair_distance_dx"] = min_pair_distance(pos[:, :2]) / run.dx
     if status != "stable":
         res.update(outcome="unstable", cause=cause)
     elif template == "dam_break" and res["volume_variation"] > 0.003:  # paper: < 0.3 %
         res.update(outcome="inaccurate", cause="volume variation above 0.3 %")
-    elif template == "hydrostatic_tank" and res["final_max_speed"] > 0.05 * math.sqrt(G * H):
+    elif template == "hydrostatic_tank" and \
+            res["final_max_speed"] > 0.05 * math.sqrt(run.gravity * block_height(run.scene)):
         res.update(outcome="inaccurate", cause="spurious currents above 0.05 sqrt(gH)")
     elif template == "elliptical_drop" and res["semi_axis_error"] > 0.01:
         res.update(outcome="inaccurate", cause="semi-axes off the ODE by more than 1 %")
@@ -200,9 +223,17 @@ def main():
     ap.add_argument("--out", required=True, type=Path)
     ap.add_argument("--sweep", nargs="*", help="sweeps to run (default: all)")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--drop-ode", type=Path, help="the elliptical_drop_ode tool (verification/flows)")
     args = ap.parse_args()
     all_sweeps = sweeps()
     names = args.sweep or list(all_sweeps)
+    unknown = [n for n in names if n not in all_sweeps]
+    if unknown:
+        ap.error(f"unknown sweep(s) {unknown}; known: {sorted(all_sweeps)}")
+    # The build tree puts the tool at <build>/verification/flows/ and sph at <build>/solver/.
+    drop_tool = args.drop_ode or Path(args.sph).resolve().parent.parent / "verification/flows/elliptical_drop_ode"
+    if any(all_sweeps[n][0] == "elliptical_drop" for n in names) and not Path(drop_tool).is_file():
+        ap.error(f"the elliptical-drop sweep needs the tool elliptical_drop_ode: no {drop_tool} (give --drop-ode)")
     args.out.mkdir(parents=True, exist_ok=True)
     done = {}  # sweeps that share their runs (the two block-impact maps) run them once
     for name in names:
@@ -210,7 +241,7 @@ def main():
         key = (template, json.dumps([pt[2] for pt in pts], sort_keys=True))
         if key not in done:
             with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-                done[key] = list(pool.map(lambda pt: run_point(args.sph, template, pt[2], work), pts))
+                done[key] = list(pool.map(lambda pt: run_point(args.sph, template, pt[2], work, drop_tool), pts))
         results = done[key]
         points = []
         for (x, y, params), res in zip(pts, results):

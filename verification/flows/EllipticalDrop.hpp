@@ -3,7 +3,7 @@
 // (2012), section 3.4: a circular drop of radius R in u = A0 x, v = -A0 y with
 // p = rho0 A0^2 (R^2 - r^2)/2 (eqs. 3.19-3.20) stays an ellipse whose semi-axes obey
 //   da/dt = A a,  db/dt = -A b,  dA/dt = A^2 (b^2 - a^2)/(a^2 + b^2),  a = b = R, A = A0 at t = 0
-// (incompressible and inviscid; a b = R^2 for all t). The ODE is solved with GSL's rk8pd.
+// (incompressible and inviscid; a b = R^2 for all t). The ODE: EllipticalDropOde.hpp.
 //
 // Semi-axes from the particles: second moments about the centroid, weighted by the particle
 // volumes m/rho: for a uniform ellipse <x^2> = a^2/4, <y^2> = b^2/4, so a = 2 sqrt(<x^2>). The
@@ -13,49 +13,17 @@
 // inside), and the raggedness of the boundary: in 36 bins of the ellipse angle
 // atan2(y/b, x/a), the outermost elliptic radius rho = sqrt((x/a)^2 + (y/b)^2) per bin, and its
 // standard deviation over the bins (Fig. 16: the Cartesian start clumps into lines and filaments).
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_odeiv2.h>
-
 #include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "EllipticalDropOde.hpp"
 #include "sph/Scene.hpp"
 #include "sph/Simulation.hpp"
 
 namespace sph::verification {
-
-struct DropAxes {
-  double a = 0.0, b = 0.0, A = 0.0;
-};
-
-// The ODE at each of `times` (ascending, >= 0).
-inline std::vector<DropAxes> dropOde(double A0, double R, const std::vector<double>& times) {
-  auto rhs = [](double, const double y[], double f[], void*) -> int {
-    const double a2 = y[0] * y[0], b2 = y[1] * y[1];
-    f[0] = y[2] * y[0];
-    f[1] = -y[2] * y[1];
-    f[2] = y[2] * y[2] * (b2 - a2) / (a2 + b2);
-    return GSL_SUCCESS;
-  };
-  gsl_odeiv2_system sys = {rhs, nullptr, 3, nullptr};
-  // Tolerances 1e-13 relative: far below any SPH error measured here (1e-3 and up).
-  gsl_odeiv2_driver* d =
-      gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 / A0, 1e-13, 1e-13);
-  double y[3] = {R, R, A0}, t = 0.0;
-  std::vector<DropAxes> out;
-  for (double ti : times) {
-    if (ti > t && gsl_odeiv2_driver_apply(d, &t, ti, y) != GSL_SUCCESS) {
-      gsl_odeiv2_driver_free(d);
-      throw std::runtime_error("GSL ODE solver failed on the elliptical drop");
-    }
-    out.push_back({y[0], y[1], y[2]});
-  }
-  gsl_odeiv2_driver_free(d);
-  return out;
-}
 
 struct DropSample {
   double t = 0.0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "LatticeStability.hpp"
@@ -22,9 +23,13 @@ const char* paperRow(LatticeKind k) {
       return "USSUU";
     case LatticeKind::triangular:
       return "SUSSU";
-    default:
+    case LatticeKind::hexagonal:
       return "UUUUU";
   }
+  // No default: -Wswitch names an enumerator missing above, and any other value is a bug
+  // (an error here), never the last case.
+  throw std::logic_error("paperRow(LatticeKind): unknown value " +
+                         std::to_string(static_cast<int>(k)));
 }
 
 std::string fmt(double v) {

@@ -1,6 +1,8 @@
 #include "sph/packing/Lattices.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sph::packing {
 
@@ -10,9 +12,12 @@ std::string_view name(LatticeKind k) {
       return "Cartesian";
     case LatticeKind::triangular:
       return "triangular";
-    default:
+    case LatticeKind::hexagonal:
       return "hexagonal";
   }
+  // No default: -Wswitch names an enumerator missing above, and any other value is a bug
+  // (an error here), never the last case.
+  throw std::logic_error("name(LatticeKind): unknown value " + std::to_string(static_cast<int>(k)));
 }
 
 double nearestNeighbour(LatticeKind kind, double dx) {
@@ -22,9 +27,13 @@ double nearestNeighbour(LatticeKind kind, double dx) {
       return dx;
     case LatticeKind::triangular:
       return dx * std::sqrt(2.0 / s3);
-    default:
+    case LatticeKind::hexagonal:
       return dx * std::sqrt(4.0 / (3.0 * s3));
   }
+  // No default: -Wswitch names an enumerator missing above, and any other value is a bug
+  // (an error here), never the last case.
+  throw std::logic_error("nearestNeighbour(LatticeKind): unknown value " +
+                         std::to_string(static_cast<int>(kind)));
 }
 
 PeriodicLattice periodicLattice(LatticeKind kind, double a, double minSide) {
