@@ -1,42 +1,19 @@
 #if defined(__GNUC__) && !defined(__clang__)
 // The pair loop's vector helpers (PairLoop.hpp) and the kernels' instantiations for vectors
-// (Kernels.hpp; only this file makes them) pass no vector across a boundary compiled elsewhere: the
-// note GCC gives on the ABI of 32-byte vectors in an x86-64-v2 build does not concern them. Before
-// the includes, since GCC checks it where the headers define them.
+// (Kernels.hpp; only the pair loop's files make them) pass no vector across a boundary compiled
+// elsewhere: the note GCC gives on the ABI of 32-byte vectors in an x86-64-v2 build does not
+// concern them. Before the includes, since GCC checks it where the headers define them.
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 #include "sph/ForceEvaluation.hpp"
 
-#include <array>
 #include <utility>
 
-#include "PairLoop.hpp"
-#include "sph/terms/Menu.hpp"
+#include "PairLoopMenu.hpp"
 
 namespace sph {
 
 namespace {
-
-template <int D>
-using Loop = void (*)(const terms::TermParameters&, const InteractionSet<D>&, const Vec<D>&,
-                      NeighbourLists, typename ForceEvaluation<D>::Workspace&, Derivatives<D>&);
-
-template <class Kernel, unsigned Mask, int D>
-void evaluate(const terms::TermParameters& parameters, const InteractionSet<D>& set,
-              const Vec<D>& g, NeighbourLists lists, typename ForceEvaluation<D>::Workspace& w,
-              Derivatives<D>& out) {
-  using Terms = terms::MenuEntry<Mask>;
-  pair_loop::pairLoop<Kernel, Terms, D>(Terms(parameters), set, g, lists, w, out);
-}
-
-// The menu, made from the term lists (terms/Menu.hpp): one pair loop for every kernel and every
-// subset of the optional terms, indexed by the subset's bits.
-template <int D, class Kernel, unsigned... Mask>
-constexpr std::array<Loop<D>, sizeof...(Mask)> menuOf(std::integer_sequence<unsigned, Mask...>) {
-  return {&evaluate<Kernel, Mask, D>...};
-}
-template <int D, class Kernel>
-constexpr auto menu = menuOf<D, Kernel>(std::make_integer_sequence<unsigned, terms::menuSize>{});
 
 template <unsigned... Mask>
 std::vector<std::string> namesOf(unsigned index, std::integer_sequence<unsigned, Mask...>) {
@@ -75,7 +52,7 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms,
       parameters_(parameters),
       work_(std::make_shared<Workspace>()) {
   static_assert(terms::menuSize == 16, "menuIndex covers every optional term");
-  loop_ = withKernel(kernel, [&](auto k) { return menu<D, decltype(k)>[menuIndex(terms)]; });
+  loop_ = pair_loop::menuLoop<D>(kernel, menuIndex(terms));
 }
 
 template <int D>

@@ -263,7 +263,7 @@ int firstBand(int u, int nt, int nBands, const Cost& cost) {
 }
 
 // Grows `store` to hold n doubles and returns its data (on a cache line: LineVector).
-double* grown(LineVector<double>& store, std::size_t n) {
+inline double* grown(LineVector<double>& store, std::size_t n) {
   store.resize(n);
   return store.data();
 }
