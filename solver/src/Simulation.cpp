@@ -336,9 +336,129 @@ void Simulation<D>::prepare() {
   if (dtFloor_ == 0) dtFloor_ = scene_.dtFloor > 0 ? scene_.dtFloor : 1e-4 * timeStep(l, who);
 }
 
+// The integrator's view of one step (integrators/StateUpdate.hpp): y and f(y), the trial state
+// y* and its rates, and each stage's pass over the particles. A stage's update is inlined into
+// the pass that also does the stage's other work (periodic wrap, reflection, the checks, the
+// lists' motion): a parallel region less each (0.6 us on two threads whose cores share a cache,
+// more when not: issue 7). Each thread writes the particles it reads in every other loop of the
+// step (a copy by one thread had the other's share of m and phase cross between the cores twice
+// a step). y*.p is not read by the trial evaluation: rates() takes p from the EOS, and the final
+// stage sets the accepted state's p (the same EOS, so the same p the set's fluid entries get).
+template <int D>
+struct Simulation<D>::Stepper {
+  Simulation& sim;
+  const double dt;
+  const std::int64_t count;
+  const bool parallel;
+  const BoxFaces<D> box;  // by value (see BoxFaces)
+  Motion motion;          // of y* in its last stage
+  std::optional<Failure> failure;
+
+  Stepper(Simulation& s, double step)
+      : sim(s),
+        dt(step),
+        count(static_cast<std::int64_t>(s.y_.size())),
+        parallel(count >= parallelFrom()),
+        box(s.bounds_, s.scene_.dx) {
+    sim.yStar_.resize(s.y_.size());
+  }
+  integrators::StateFields<D, false> state() const {
+    const Particles<D>& y = sim.y_;
+    return {y.r.data(), y.v.data(), y.rho.data(), y.h.data(), y.m.data(), y.phase.data()};
+  }
+  integrators::StateFields<D, true> trial() {
+    Particles<D>& y = sim.yStar_;
+    return {y.r.data(), y.v.data(), y.rho.data(), y.h.data(), y.m.data(), y.phase.data()};
+  }
+  integrators::RateFields<D> rates() const { return fieldsOf(sim.f_); }
+  integrators::RateFields<D> trialRates() const { return fieldsOf(sim.fStar_); }
+  static integrators::RateFields<D> fieldsOf(const Derivatives<D>& f) {
+    return {f.dvdt.data(), f.drhodt.data(), f.dhdt.data()};
+  }
+  // f(y*) at t + `after` (sized by the evaluation).
+  void evaluate(double after) { sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion); }
+
+  // Stage::trial: update, wrap, motion. Returns true.
+  template <class Update>
+  bool move(Update update, integrators::StageTag<integrators::Stage::trial>) {
+    Vec<D>* rS = sim.yStar_.r.data();
+    const double* hS = sim.yStar_.h.data();
+    motion = sim.motionStart(count);
+    double hMax = 0, moved2 = 0, grown = 0;
+    const BoxFaces<D> faces = box;
+#pragma omp parallel if (parallel) reduction(max : hMax, moved2, grown)
+    {
+      Motion mine = motion;
+      walk(shareOf(count, omp_get_thread_num(), omp_get_num_threads()),
+           [&mine, faces, update, rS, hS](std::int64_t i) {
+             update(i);
+             faces.wrap(rS[i]);
+             mine.add(rS[i], hS[i], i);
+           });
+      hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
+    }
+    motion.hMax = hMax, motion.moved2 = moved2, motion.grown = grown;
+    return true;
+  }
+
+  // Stage::final: update, the pressure of the new density, wrap, the walls' reflection, then
+  // the checks and the motion (after a custom reflection, which moves particles after this
+  // pass, the checks wait for it). Returns false with `failure` set if a check fails.
+  template <class Update>
+  bool move(Update update, integrators::StageTag<integrators::Stage::final>) {
+    Particles<D>& ys = sim.yStar_;
+    Vec<D>* rS = ys.r.data();
+    Vec<D>* vS = ys.v.data();
+    const double *rhoS = ys.rho.data(), *hS = ys.h.data();
+    double* pS = ys.p.data();
+    const int* phaseS = ys.phase.data();
+    const bool ownReflection = static_cast<bool>(sim.reflection_);
+    const Plausible<D> plausible(sim.scene_, sim.bounds_);
+    const Phase* phases = sim.scene_.phases.data();
+    const BoxFaces<D> faces = box;
+    motion = sim.motionStart(count);
+    long reflected = 0;
+    double deepest = sim.reflectionDepth_, hMax = 0, moved2 = 0, grown = 0;
+    std::int64_t first = count;
+    const double t = sim.t_ + dt;
+    const long step = sim.step_ + 1;
+    const Simulation& checker = sim;
+#pragma omp parallel if (parallel) reduction(+ : reflected) \
+    reduction(max : deepest, hMax, moved2, grown) reduction(min : first)
+    {
+      Motion mine = motion;
+      walk(
+          shareOf(count, omp_get_thread_num(), omp_get_num_threads()), [
+            &mine, &reflected, &deepest, &first, &checker, &ys, update, faces, plausible, phases,
+            ownReflection, t, step, rS, vS, rhoS, hS, pS,
+            phaseS
+          ](std::int64_t i) __attribute__((always_inline)) {
+            update(i);
+            pS[i] = TaitEquationOfState::pressure(rhoS[i], phases[phaseS[i]]);
+            faces.wrap(rS[i]);
+            faces.reflect(rS[i], vS[i], reflected, deepest);
+            if (ownReflection) return;
+            if (!plausible(rS[i], vS[i], rhoS[i], hS[i], phaseS[i]) && i < first &&
+                checker.checkParticle(ys, i, t, step))
+              first = i;
+            mine.add(rS[i], hS[i], i);
+          });
+      hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
+    }
+    sim.reflections_ += reflected, sim.reflectionDepth_ = deepest;
+    motion.hMax = hMax, motion.moved2 = moved2, motion.grown = grown;
+    if (ownReflection) {
+      sim.reflection_(ys);
+      failure = sim.check(ys, t, step);
+    } else {
+      failure = sim.failureFrom(ys, first, t, step);
+    }
+    return !failure;
+  }
+};
+
 template <int D>
 std::optional<Failure> Simulation<D>::advance(double dtMax) {
-  const std::size_t n = y_.size();
   prepare();
   TimeStepLimit limit;
   int limiting = -1;
@@ -355,102 +475,10 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
     return Failure{FailureCause::dt_collapse, step_ + 1, t_, limiting, m.str()};
   }
   const double dt = std::min(dtStable, dtMax);
-  // Predictor. Every evolved field of y* is written below, and m and the phase copied, in the same
-  // loop: each thread writes the particles it reads in every other loop of the step (a copy by one
-  // thread had the other's share of m and phase cross between the cores twice a step). y*.p is
-  // not read: rates() takes p from the EOS, and the corrector sets the accepted state's p (the
-  // same EOS, so the same p the set's fluid entries get).
-  // The per-particle work after each update (periodic wrap, wall reflection, the checks, the
-  // lists' motion) is done in the update's own loop: a parallel region less each (0.6 us on two
-  // threads whose cores share a cache, more when not: issue 7).
-  yStar_.resize(n);
-  const std::int64_t count = static_cast<std::int64_t>(n);
-  const bool parallel = count >= parallelFrom();
-  const BoxFaces<D> box(bounds_, scene_.dx);
-  // Through pointers held in the loops (see BoxFaces).
-  const Vec<D>* r = y_.r.data();
-  const Vec<D>* v = y_.v.data();
-  const Vec<D>* a = f_.dvdt.data();
-  const double *rho = y_.rho.data(), *h = y_.h.data(), *m = y_.m.data();
-  const double *drho = f_.drhodt.data(), *dh = f_.dhdt.data();
-  const int* phase = y_.phase.data();
-  Vec<D>* rS = yStar_.r.data();
-  Vec<D>* vS = yStar_.v.data();
-  double *rhoS = yStar_.rho.data(), *hS = yStar_.h.data(), *mS = yStar_.m.data(),
-         *pS = yStar_.p.data();
-  int* phaseS = yStar_.phase.data();
-  Motion motion = motionStart(count);
-  {
-    double hMax = 0, moved2 = 0, grown = 0;
-#pragma omp parallel if (parallel) reduction(max : hMax, moved2, grown)
-    {
-      Motion mine = motion;
-      walk(shareOf(count, omp_get_thread_num(), omp_get_num_threads()),
-           [&mine, box, dt, r, v, a, rho, h, m, drho, dh, phase, rS, vS, rhoS, hS, mS,
-            phaseS](std::int64_t i) {
-             rS[i] = r[i] + dt * v[i];
-             vS[i] = v[i] + dt * a[i];
-             rhoS[i] = rho[i] + dt * drho[i];
-             hS[i] = h[i] + dt * dh[i];
-             mS[i] = m[i], phaseS[i] = phase[i];
-             box.wrap(rS[i]);
-             mine.add(rS[i], hS[i], i);
-           });
-      hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
-    }
-    motion.hMax = hMax, motion.moved2 = moved2, motion.grown = grown;
-  }
-  rates(yStar_, t_ + dt, fStar_, motion);
-  const Vec<D>* aStar = fStar_.dvdt.data();  // (sized by the evaluation)
-  const double *drhoStar = fStar_.drhodt.data(), *dhStar = fStar_.dhdt.data();
-  // Corrector: the trapezoidal rule over the two rates. Positions first: they need v*. A custom
-  // reflection moves particles after this loop: the checks and the motion then wait for it.
-  // The body is inlined into the loop (GCC called it for each particle, whose EOS, a division and
-  // four multiplications in a chain, then could not overlap the next particle's), and the arrays'
-  // pointers are copied into it: captured by reference, each was loaded again after every store.
+  Stepper step(*this, dt);
+  if (!Integrator::advance(step, dt)) return step.failure;
   const bool ownReflection = static_cast<bool>(reflection_);
-  const Plausible<D> plausible(scene_, bounds_);
-  const Phase* phases = scene_.phases.data();
-  motion = motionStart(count);
-  {
-    long reflected = 0;
-    double deepest = reflectionDepth_, hMax = 0, moved2 = 0, grown = 0;
-    std::int64_t first = count;
-    const double t = t_ + dt;
-    const long step = step_ + 1;
-#pragma omp parallel if (parallel) reduction(+ : reflected) \
-    reduction(max : deepest, hMax, moved2, grown) reduction(min : first)
-    {
-      Motion mine = motion;
-      walk(
-          shareOf(count, omp_get_thread_num(), omp_get_num_threads()),
-          [&mine, &reflected, &deepest, &first, this, box, plausible, phases, ownReflection, t, step,
-           dt, r, v, a, aStar, rho, h, drho, dh, drhoStar, dhStar, rS, vS, rhoS, hS, pS,
-           phaseS](std::int64_t i) __attribute__((always_inline)) {
-            rS[i] = r[i] + 0.5 * dt * (v[i] + vS[i]);
-            vS[i] = v[i] + 0.5 * dt * (a[i] + aStar[i]);
-            rhoS[i] = rho[i] + 0.5 * dt * (drho[i] + drhoStar[i]);
-            pS[i] = TaitEquationOfState::pressure(rhoS[i], phases[phaseS[i]]);
-            hS[i] = h[i] + 0.5 * dt * (dh[i] + dhStar[i]);
-            box.wrap(rS[i]);
-            box.reflect(rS[i], vS[i], reflected, deepest);
-            if (ownReflection) return;
-            if (!plausible(rS[i], vS[i], rhoS[i], hS[i], phaseS[i]) && i < first &&
-                checkParticle(yStar_, i, t, step))
-              first = i;
-            mine.add(rS[i], hS[i], i);
-          });
-      hMax = mine.hMax, moved2 = mine.moved2, grown = mine.grown;
-    }
-    reflections_ += reflected, reflectionDepth_ = deepest;
-    motion.hMax = hMax, motion.moved2 = moved2, motion.grown = grown;
-    if (ownReflection) {
-      reflection_(yStar_);
-      if (auto failure = check(yStar_, t, step)) return failure;
-    } else if (auto failure = failureFrom(yStar_, first, t, step)) {
-      return failure;
-    }
-  }
+  const Motion motion = step.motion;
   std::swap(y_, yStar_);
   t_ += dt, dt_ = dt, limit_ = limit;
   ++step_;

@@ -1,6 +1,6 @@
 #pragma once
 // The time loop of one scene: ghosts and neighbours, the enabled terms, the body force, and the
-// predictor-corrector step with the Morris et al. (1997) time-step limits.
+// time integrator's step (integrators/) with the Morris et al. (1997) time-step limits.
 #include <functional>
 #include <optional>
 #include <string>
@@ -9,6 +9,7 @@
 #include "sph/InteractionSet.hpp"
 #include "sph/Particles.hpp"
 #include "sph/Scene.hpp"
+#include "sph/integrators/PredictorCorrector.hpp"
 
 namespace sph {
 
@@ -70,8 +71,8 @@ class Simulation {
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
 
-  // One predictor-corrector step (Heun): y* = y + dt f(y), y' = y + dt/2 (f(y) + f(y*)).
-  // Two force evaluations a step. On failure the state stays the last good one.
+  // One step of the integrator (the paper's predictor-corrector,
+  // integrators/PredictorCorrector.hpp). On failure the state stays the last good one.
   std::optional<Failure> advance(double dtMax = 1e300);
 
   // The rates of the given state at time t: every term, the body force and the source.
@@ -98,6 +99,8 @@ class Simulation {
   std::vector<std::string> termNames() const;
 
  private:
+  using Integrator = integrators::PredictorCorrector;
+  struct Stepper;  // what the integrator sees of a step (Simulation.cpp)
   // The stable step and what limits it; `particle` is the one with the extreme speed, h or
   // acceleration.
   double timeStep(TimeStepLimit& limit, int& particle) const;
