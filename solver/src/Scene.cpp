@@ -341,6 +341,15 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.terms.artificialViscosity = s.beta > 0.0;
   s.terms.morrisViscosity = physics.boolean("morris_viscosity", false);
   s.terms.variableH = physics.boolean("variable_h", false);
+  // Molteni & Colagrossi (2009): it diffuses density differences, and across a phase interface
+  // the density jumps by the phases' rho0, so one phase only (terms/DensityDiffusion*.hpp).
+  s.diffusionDelta = physics.nonNegative("density_diffusion", 0.0);
+  s.terms.densityDiffusion = s.diffusionDelta > 0.0;
+  if (s.terms.densityDiffusion && s.phases.size() > 1)
+    physics.fail("density_diffusion",
+                 "Molteni & Colagrossi's form diffuses the density jump at a phase interface; "
+                 "the scene has " +
+                     std::to_string(s.phases.size()) + " phases, it may have one");
   physics.rejectUnknown();
 
   SceneTable numerics = top.sub("numerics");

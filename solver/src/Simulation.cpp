@@ -57,7 +57,10 @@ template <int D>
 Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
     : scene_(scene),
       bounds_(boundariesOf<D>(scene)),
-      forces_(scene.kernel, scene.terms, scene.beta),
+      forces_(scene.kernel, scene.terms,
+              {.beta = scene.beta,
+               .diffusionDelta = scene.diffusionDelta,
+               .soundSpeed = scene.phases.empty() ? 0.0 : scene.phases[0].c0}),
       y_(std::move(initial)),
       skinFraction_(scene.neighbourSkin) {
   id_.resize(y_.size());
