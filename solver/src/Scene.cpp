@@ -50,12 +50,18 @@ FaceKind faceKind(SceneTable& t, const std::string& key, const std::string& valu
 
 void readDomain(SceneTable domain, Scene& s) {
   const int D = s.dimension;
+  std::vector<std::string> keys{"lower", "upper", "ghost_pressure", "wall_velocity"}, faces;
+  for (int a = 0; a < D; ++a)
+    for (const char* side : {"_lower", "_upper"}) faces.push_back(axisName[a] + std::string(side));
+  keys.insert(keys.end(), faces.begin(), faces.end());
+  domain.allow(keys);
   s.lower = domain.vector("lower", D);
   s.upper = domain.vector("upper", D);
   for (int a = 0; a < D; ++a)
     if (!(s.upper[a] > s.lower[a]))
       domain.fail("upper", std::string("must exceed 'lower' along ") + axisName[a]);
   SceneTable velocity = domain.sub("wall_velocity");
+  velocity.allow(faces);
   for (int a = 0; a < D; ++a) {
     const std::string axis = axisName[a];
     std::vector<std::string> kinds(2);
@@ -84,7 +90,8 @@ void readPhases(std::vector<SceneTable> phases, Scene& s, SceneTable& top) {
   std::set<std::string> names;
   for (auto& t : phases) {
     Phase p;
-    p.name = t.string("name");
+    t.allow({"name", "rho0", "c0", "mu", "p0", "gamma"});
+    p.name = t.name("name");
     if (!names.insert(p.name).second) t.fail("name", "phase '" + p.name + "' defined twice");
     p.rho0 = t.positive("rho0");
     p.c0 = t.positive("c0");
@@ -165,6 +172,8 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
   if (fluids.empty()) top.fail("fluid", "missing: at least one [[fluid]] block");
   for (auto& t : fluids) {
     FluidBlock b;
+    t.allow({"shape", "lower", "upper", "center", "radius", "phase", "velocity",
+             "velocity_gradient", "initial_pressure", "surface", "initial", "packing"});
     const std::string shape = t.string("shape", "rectangle");
     if (shape == "rectangle") {
       b.lower = t.vector("lower", D);
@@ -210,6 +219,7 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
     }
     if (t.has("packing")) {
       SceneTable pk = t.sub("packing");
+      pk.allow({"alpha", "max_iterations", "stop_kinetic_energy"});
       if (!b.packed) t.fail("packing", "packing parameters need initial = \"packed\"");
       b.packingAlpha = pk.nonNegative("alpha", b.packingAlpha);
       b.packingMaxIterations =
@@ -250,7 +260,8 @@ void readProbes(std::vector<SceneTable> probes, Scene& s) {
   std::set<std::string> names;
   for (auto& t : probes) {
     Probe p;
-    p.name = t.string("name");
+    t.allow({"name", "type", "position", "x", "reference", "scale_length", "scale_height"});
+    p.name = t.name("name");
     if (!names.insert(p.name).second) t.fail("name", "probe '" + p.name + "' defined twice");
     p.type = t.string("type");
     if (p.type == "pressure") {
@@ -322,7 +333,9 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.file = file;
   s.text = text;
   SceneTable top(root, "", s.file);
-  s.name = top.string("name");
+  top.allow({"name", "description", "dimension", "domain", "phase", "fluid", "physics", "numerics",
+             "output", "probe"});
+  s.name = top.name("name");
   top.string("description", "");
   const double dimension = top.number("dimension");  // 2.5 must not pass as 2
   if (dimension != 1 && dimension != 2 && dimension != 3)
@@ -334,6 +347,8 @@ Scene parseScene(const std::string& text, const std::string& file) {
   readFluids(top.array("fluid"), s, top);
 
   SceneTable physics = top.sub("physics");
+  physics.allow(
+      {"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
@@ -344,6 +359,8 @@ Scene parseScene(const std::string& text, const std::string& file) {
   physics.rejectUnknown();
 
   SceneTable numerics = top.sub("numerics");
+  numerics.allow({"kernel", "dx", "h_over_dx", "cfl_acoustic", "cfl_viscous", "cfl_force",
+                  "end_time", "density_band", "dt_floor", "neighbour_skin"});
   s.kernel = kernelKind(numerics, numerics.string("kernel", "quadratic"));
   s.dx = numerics.positive("dx");
   s.hOverDx = numerics.positive("h_over_dx", 1.33);
@@ -364,6 +381,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
 
   SceneTable output = top.sub("output");
+  output.allow({"snapshot_interval", "series_every"});
   s.snapshotInterval = output.nonNegative("snapshot_interval", 0.0);
   const long seriesEvery = output.integer("series_every", 1);
   if (seriesEvery < 1) output.fail("series_every", "must be a positive whole number");

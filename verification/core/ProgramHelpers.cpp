@@ -50,6 +50,34 @@ void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+std::string editedScene(const std::vector<std::pair<std::string, std::string>>& edits,
+                        const std::string& base) {
+  std::string text = readText(scenePath(base));
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "the base scene no longer contains '" << from << "'";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  const std::string path = freshOutputDirectory() + "/scene.toml";
+  writeText(path, text);
+  return path;
+}
+
+std::string editedScene(const std::string& from, const std::string& to) {
+  return editedScene({{from, to}});
+}
+
+std::string expectRejected(const std::string& from, const std::string& to, const std::string& key,
+                           const std::string& problem) {
+  const std::string path = editedScene(from, to);
+  const ProgramResult r = runSph("check '" + path + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(path), std::string::npos) << "file not named: " << r.output;
+  EXPECT_NE(r.output.find("'" + key + "'"), std::string::npos) << "key not named: " << r.output;
+  EXPECT_NE(r.output.find(problem), std::string::npos) << "problem not named: " << r.output;
+  return r.output;
+}
+
 namespace {
 // Opens the file read-only with HDF5's error printing off; closes it on destruction.
 struct File {

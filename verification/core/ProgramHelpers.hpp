@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sph::core_tests {
@@ -21,6 +22,17 @@ std::string freshOutputDirectory();
 std::string scenePath(const std::string& name);  // CORE_SCENES/<name>
 std::string readText(const std::string& path);
 void writeText(const std::string& path, const std::string& text);
+
+// A scene of CORE_SCENES (small_tank.toml by default) with each `from` (which must occur) replaced
+// by its `to`, written to the running test's fresh output directory; returns the path.
+std::string editedScene(const std::vector<std::pair<std::string, std::string>>& edits,
+                        const std::string& base = "small_tank.toml");
+std::string editedScene(const std::string& from, const std::string& to);
+
+// `sph check` of the small tank with one edit must exit 2 (Run.hpp: exitBadInput) with a message
+// naming the file, 'key' and the problem (STYLE.md section 6). Returns the output.
+std::string expectRejected(const std::string& from, const std::string& to, const std::string& key,
+                           const std::string& problem);
 
 // HDF5 reading; each returns nullopt where the object does not exist.
 std::optional<std::string> stringAttribute(const std::string& file, const std::string& object,

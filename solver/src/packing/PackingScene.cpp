@@ -73,9 +73,7 @@ PackingScene parsePackingScene(const std::string& text, const std::string& file)
     throw SceneError(msg.str());
   }
   SceneTable top(root, "", s.file);
-  s.name = top.string("name");
-  if (s.name.empty() || s.name.find_first_of("/\\ ") != std::string::npos)
-    top.fail("name", "must be a non-empty file name without spaces or slashes");
+  s.name = top.name("name");
   s.description = top.string("description", "");
   readGeometry(top.sub("geometry"), s);
 
