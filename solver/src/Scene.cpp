@@ -256,6 +256,35 @@ KernelKind kernelKind(SceneTable& t, const std::string& v) {
   t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
 }
 
+// The domain as "[l0, u0] x [l1, u1]".
+std::string fmtBox(const Scene& s) {
+  std::string out;
+  for (int a = 0; a < s.dimension; ++a) out += (a ? " x " : "") + fmtRange(s.lower[a], s.upper[a]);
+  return out;
+}
+
+// A probe must look inside the domain: a pressure probe outside has no particle near it and
+// records 0 Pa for the whole run, a gauge beyond the walls an empty column.
+void checkProbeInside(SceneTable& t, const Probe& p, const Scene& s) {
+  const bool point = p.type == "pressure";
+  bool inside = true;
+  std::ostringstream at;
+  if (point) {
+    at << "(";
+    for (int a = 0; a < s.dimension; ++a) {
+      inside = inside && p.position[a] >= s.lower[a] && p.position[a] <= s.upper[a];
+      at << (a ? ", " : "") << p.position[a];
+    }
+    at << ")";
+  } else {
+    inside = p.x >= s.lower[0] && p.x <= s.upper[0];
+    at << "x = " << p.x;
+  }
+  if (!inside)
+    t.fail(point ? "position" : "x",
+           "probe '" + p.name + "' at " + at.str() + " lies outside the domain " + fmtBox(s));
+}
+
 void readProbes(std::vector<SceneTable> probes, Scene& s) {
   std::set<std::string> names;
   for (auto& t : probes) {
@@ -266,8 +295,10 @@ void readProbes(std::vector<SceneTable> probes, Scene& s) {
     p.type = t.string("type");
     if (p.type == "pressure") {
       p.position = t.vector("position", s.dimension);
+      checkProbeInside(t, p, s);
     } else if (p.type == "water_level" || p.type == "column_height") {
       p.x = t.number("x");
+      checkProbeInside(t, p, s);
     } else if (p.type != "surge_front") {
       t.fail("type", "unknown probe type '" + p.type +
                          "' (expected surge_front, column_height, pressure or water_level)");

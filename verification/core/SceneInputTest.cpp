@@ -53,6 +53,25 @@ TEST(SceneNames, RunWithABadNameWritesNothing) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// Part 2. A pressure probe outside the domain has no particle near it and recorded 0 Pa.
+TEST(SceneProbes, PressureProbeOutsideTheDomain) {
+  const std::string out = expectRejected("position = [0.05, 0.005]", "position = [0.05, 0.5]",
+                                         "probe[1].position", "lies outside the domain");
+  EXPECT_NE(out.find("probe 'p_bottom' at (0.05, 0.5)"), std::string::npos) << out;
+  EXPECT_NE(out.find("[0, 0.2] x [0, 0.2]"), std::string::npos) << out;
+}
+
+TEST(SceneProbes, GaugeOutsideTheDomain) {
+  expectRejected("type = \"surge_front\"", "type = \"water_level\"\nx = -0.1", "probe[0].x",
+                 "probe 'front' at x = -0.1 lies outside the domain");
+}
+
+TEST(SceneProbes, ProbeOnTheWallIsAccepted) {
+  const std::string path = editedScene("position = [0.05, 0.005]", "position = [0.0, 0.0]");
+  const ProgramResult r = runSph("check '" + path + "'");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
 // Part 3. SCENES.md says true or false; toml++ would read an integer 1 as true.
 TEST(SceneTypes, IntegerForABoolean) {
   expectRejected("morris_viscosity = true", "morris_viscosity = 1", "physics.morris_viscosity",
