@@ -348,6 +348,37 @@ void warnOnLowSoundSpeed(Scene& s) {
     }
 }
 
+// A block that holds no lattice node at dx (InitialParticles.hpp) is no fluid: a rectangle
+// thinner than dx/2 along an axis (round(width/dx) = 0), or a circle of fewer than one node across
+// (round(2r/dx) = 0), or of two whose nodes at dx/2 from the centre along every axis lie outside
+// it (r <= sqrt(D) dx/2; an odd count has the centre's node, four and more the ones at
+// sqrt(D) dx/2).
+void checkBlocksHoldParticles(const Scene& s) {
+  const int D = s.dimension;
+  for (std::size_t k = 0; k < s.fluids.size(); ++k) {
+    const FluidBlock& b = s.fluids[k];
+    const std::string block = "fluid[" + std::to_string(k) + "]";
+    std::ostringstream m;
+    m << s.file << ": key '" << block;
+    if (b.shape == FluidBlock::Shape::rectangle) {
+      for (int a = 0; a < D; ++a)
+        if ((b.upper[a] - b.lower[a]) / s.dx < 0.5) {
+          m << ".upper': the block is " << b.upper[a] - b.lower[a] << " m across along "
+            << axisName[a] << ", less than dx/2 = " << 0.5 * s.dx
+            << " m (numerics.dx): it would hold no particle";
+          throw SceneError(m.str());
+        }
+      continue;
+    }
+    const double across = 2.0 * b.radius / s.dx;
+    if (across < 0.5 || (across < 2.5 && across >= 1.5 && b.radius <= 0.5 * std::sqrt(D) * s.dx)) {
+      m << ".radius': a circle of radius " << b.radius
+        << " m holds no lattice node at dx = " << s.dx << " m (numerics.dx)";
+      throw SceneError(m.str());
+    }
+  }
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& file) {
@@ -410,6 +441,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   numerics.rejectUnknown();
   for (int a = 0; a < D; ++a)
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
+  checkBlocksHoldParticles(s);
 
   SceneTable output = top.sub("output");
   output.allow({"snapshot_interval", "series_every"});

@@ -72,6 +72,20 @@ TEST(SceneProbes, ProbeOnTheWallIsAccepted) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
 }
 
+// Part 5. A block thinner than dx/2 holds no particle (InitialParticlesTest.cpp: and none outside
+// it): it is refused rather than left out of the run unsaid.
+TEST(SceneBlocks, BlockThinnerThanHalfDx) {
+  expectRejected("upper = [0.1, 0.1]", "upper = [0.1, 0.004]", "fluid[0].upper",
+                 "0.004 m across along y, less than dx/2 = 0.005 m (numerics.dx): it would hold no "
+                 "particle");
+}
+
+TEST(SceneBlocks, CircleWithoutANode) {
+  expectRejected("shape = \"rectangle\"\nlower = [0.0, 0.0]\nupper = [0.1, 0.1]",
+                 "shape = \"circle\"\ncenter = [0.1, 0.1]\nradius = 0.002", "fluid[0].radius",
+                 "holds no lattice node");
+}
+
 // Part 3. SCENES.md says true or false; toml++ would read an integer 1 as true.
 TEST(SceneTypes, IntegerForABoolean) {
   expectRejected("morris_viscosity = true", "morris_viscosity = 1", "physics.morris_viscosity",
