@@ -214,7 +214,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("max_volume_variation", series.maxVariation[0], m);
   for (std::size_t k = 0; k < scene.phases.size(); ++k)
     file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
-  file.flush();
+  file.finish();
 
   if (!opt.quiet) {
     std::printf("%s: %s at t = %.6g s after %ld steps, %zu particles, wall time %.2f s\n",

@@ -16,6 +16,15 @@ struct ProgramResult {
 // Runs `sph <arguments>` (SPH_EXE) through the shell and returns its exit code and output.
 ProgramResult runSph(const std::string& arguments);
 
+// Starts `sph <arguments>` (no shell) as a child process, its output appended to `log`; returns
+// its process id.
+int startSph(const std::vector<std::string>& arguments, const std::string& log);
+// Waits up to `seconds` for a child started by startSph. Returns its exit status, 128 + the signal
+// if one ended it, or -1 if it was still running (it is then killed).
+int waitForSph(int pid, double seconds);
+// Waits up to `seconds` for `path` to exist.
+bool waitForFile(const std::string& path, double seconds);
+
 // A fresh, empty directory for the running test: CORE_OUT/<Suite>.<Test>.
 std::string freshOutputDirectory();
 

@@ -294,6 +294,7 @@ int packScene(const PackingScene& s, const PackOptions& options) {
                 << (finite ? "did not reach" : "produced a non-finite value before") << " T/beta < "
                 << s.parameters.stopKineticEnergy << " within " << s.parameters.maxIterations
                 << " iterations\n";
+    out.finish();
   }
   // Beside the snapshots: H |grad Gamma| per fluid particle before and after, and the solid
   // particles (kind 0 wall, 1 free surface), which the SPH start does not carry.
