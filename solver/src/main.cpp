@@ -6,6 +6,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "sph/Interrupt.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
 #include "sph/packing/PackingScene.hpp"
@@ -153,6 +154,7 @@ int main(int argc, char** argv) {
     return sph::exitDone;
   }
   try {
+    sph::catchInterrupts();
     return sph::runScene(scene, options);
   } catch (const std::exception& e) {
     return reportError(e);

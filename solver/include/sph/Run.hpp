@@ -7,8 +7,16 @@
 namespace sph {
 
 // exitOutputError: the run file or the output directory cannot be written (a full disk, a path that
-// is a file); the message names the path.
-enum ExitCode { exitDone = 0, exitBadInput = 2, exitNumericalFailure = 3, exitOutputError = 4 };
+// is a file); the message names the path. exitInterrupted + the signal (130 SIGINT, 143 SIGTERM,
+// the shell's convention): the run was stopped by one (Interrupt.hpp) and its run file, status
+// interrupted, holds the run so far.
+enum ExitCode {
+  exitDone = 0,
+  exitBadInput = 2,
+  exitNumericalFailure = 3,
+  exitOutputError = 4,
+  exitInterrupted = 128
+};
 
 struct RunOptions {
   std::string outDir = ".";
@@ -20,7 +28,8 @@ struct RunOptions {
 };
 
 // Returns exitDone, or exitNumericalFailure when the run stopped on a failure (the run file then
-// keeps the series so far and the last good state as its final snapshot).
+// keeps the series so far and the last good state as its final snapshot), or exitInterrupted + the
+// signal when catchInterrupts() is in force and SIGINT or SIGTERM came.
 int runScene(const Scene& scene, const RunOptions& options);
 
 // Build and machine facts written into every run file.
