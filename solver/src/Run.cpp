@@ -275,6 +275,10 @@ int run(const Scene& scene, const RunOptions& opt) {
 
 int runScene(const Scene& scene, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
+  RunLimits limits = options.limits;
+  limits.outDir = options.outDir;
+  RunEstimate estimate = checkMemory(scene, limits);
+  checkDuration(scene, limits, estimate);
   switch (scene.dimension) {
     case 1:
       return run<1>(scene, options);

@@ -17,8 +17,9 @@
 
 namespace sph::core_tests {
 
-ProgramResult runSph(const std::string& arguments) {
-  const std::string command = std::string("'") + SPH_EXE + "' " + arguments + " 2>&1";
+ProgramResult runSph(const std::string& arguments, const std::string& shellPrefix) {
+  const std::string command =
+      shellPrefix + " '" + std::string(SPH_EXE) + "' " + arguments + " 2>&1";
   ProgramResult r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;

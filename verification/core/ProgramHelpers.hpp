@@ -13,8 +13,9 @@ struct ProgramResult {
   std::string output;  // stdout and stderr together
 };
 
-// Runs `sph <arguments>` (SPH_EXE) through the shell and returns its exit code and output.
-ProgramResult runSph(const std::string& arguments);
+// Runs `sph <arguments>` (SPH_EXE) through the shell and returns its exit code and output;
+// `shellPrefix` runs first in the same shell (e.g. "ulimit -v 300000;").
+ProgramResult runSph(const std::string& arguments, const std::string& shellPrefix = "");
 
 // Starts `sph <arguments>` (no shell) as a child process, its output appended to `log`; returns
 // its process id.

@@ -2,10 +2,13 @@
 // Runs a checked scene to its end time and writes its run file. Exit codes of the `sph` program.
 #include <string>
 
+#include "sph/RunBudget.hpp"
 #include "sph/Scene.hpp"
 
 namespace sph {
 
+// exitOutOfMemory: an allocation failed (std::bad_alloc) although the scene passed the memory
+// estimate (RunBudget.hpp): other processes took memory, or the estimate was short.
 // exitOutputError: the run file or the output directory cannot be written (a full disk, a path that
 // is a file); the message names the path. exitInterrupted + the signal (130 SIGINT, 143 SIGTERM,
 // the shell's convention): the run was stopped by one (Interrupt.hpp) and its run file, status
@@ -15,6 +18,7 @@ enum ExitCode {
   exitBadInput = 2,
   exitNumericalFailure = 3,
   exitOutputError = 4,
+  exitOutOfMemory = 5,
   exitInterrupted = 128
 };
 
@@ -25,9 +29,11 @@ struct RunOptions {
                               // (ThreadTuner)
   bool progress = false;      // a progress line on stderr (only on a terminal)
   bool quiet = false;
+  RunLimits limits;  // checked before anything is made (its outDir is set from outDir)
 };
 
-// Returns exitDone, or exitNumericalFailure when the run stopped on a failure (the run file then
+// Throws SceneError where the scene passes the limits (checkMemory, checkDuration). Returns
+// exitDone, or exitNumericalFailure when the run stopped on a failure (the run file then
 // keeps the series so far and the last good state as its final snapshot), or exitInterrupted + the
 // signal when catchInterrupts() is in force and SIGINT or SIGTERM came.
 int runScene(const Scene& scene, const RunOptions& options);
