@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "sph/EquationOfState.hpp"
 #include "sph/packing/Geometry.hpp"
@@ -22,10 +24,14 @@ std::vector<Vec<D>> latticeNodes(const FluidBlock& b, double dx) {
   for (int a = 0; a < D; ++a) {
     lo[a] = circle ? b.center[a] - b.radius : b.lower[a];
     hi[a] = circle ? b.center[a] + b.radius : b.upper[a];
-    count[a] = std::lround((hi[a] - lo[a]) / dx);
+    count[a] = latticeCount(hi[a] - lo[a], dx);
     if (circle) lo[a] = b.center[a] - 0.5 * dx * count[a];
   }
   std::vector<Vec<D>> out;
+  // A rectangle thinner than dx/2 along an axis has no node along it: the loop below would still
+  // place one at lo + dx/2, outside the block.
+  for (int a = 0; a < D; ++a)
+    if (count[a] == 0) return out;
   std::array<long, D> idx{};
   for (;;) {
     Vec<D> x;
@@ -72,8 +78,8 @@ std::vector<Vec<2>> solidAlongOpenSides(const FluidBlock& b,
                                         const std::vector<packing::MirrorWall>& walls, double dx,
                                         int layers) {
   const Vec<2> lo(b.lower[0], b.lower[1]);
-  const long nx = std::lround((b.upper[0] - b.lower[0]) / dx);
-  const long ny = std::lround((b.upper[1] - b.lower[1]) / dx);
+  const long nx = latticeCount(b.upper[0] - b.lower[0], dx);
+  const long ny = latticeCount(b.upper[1] - b.lower[1], dx);
   const auto fluidSide = [&](const Vec<2>& y) {
     for (const auto& w : walls)
       if (w.fluidSide * (y[w.axis] - w.at) <= 0.0) return false;
@@ -161,6 +167,17 @@ double stretchingQmax(const FluidBlock& b, const Eigen::Matrix<double, D, D>& GG
 }
 
 }  // namespace
+
+long latticeCount(double width, double dx) {
+  const double n = width / dx;
+  // 2^53: beyond it a double no longer holds every whole number, and lround's long is reached
+  // soon after; no block that fits in memory comes near (RunBudget refuses far earlier).
+  if (!(n >= 0.0 && n < 9007199254740992.0))
+    throw std::overflow_error("latticeCount: a block of width " + std::to_string(width) +
+                              " m holds " + std::to_string(n) + " lattice spacings of " +
+                              std::to_string(dx) + " m, too many to count");
+  return std::lround(n);
+}
 
 template <int D>
 Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* packed) {

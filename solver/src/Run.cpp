@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "sph/Diagnostics.hpp"
 #include "sph/EnergyBudget.hpp"
 #include "sph/InitialParticles.hpp"
+#include "sph/Interrupt.hpp"
 #include "sph/RunFile.hpp"
 #include "sph/Simulation.hpp"
 #include "sph/ThreadTuner.hpp"
@@ -36,6 +38,10 @@ SnapshotFields fieldsOf(const Particles<D>& s, const std::vector<int>& ids) {
     f.phase[i] = s.phase[k];
   }
   return f;
+}
+
+const char* signalName(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
 }
 
 std::string join(const std::vector<std::string>& v) {
@@ -138,13 +144,16 @@ int run(const Scene& scene, const RunOptions& opt) {
   for (const PackedBlock& b : packed) writePacking(file, scene, b);
 
   Series series(scene);
+  long recorded = -1, snapshotted = -1;  // the steps last recorded and written
   auto record = [&] {
     series.record(sim.time(), sim.lastDt(), sim.step(), int(sim.lastLimit()),
                   diagnose<D>(scene, sim.particles(), sim.interactionSet()));
+    recorded = sim.step();
   };
   auto snapshot = [&](bool lastGood) {
     file.appendSeries(series.columns);
     file.snapshot(sim.time(), sim.step(), fieldsOf(sim.particles(), sim.ids()), lastGood);
+    snapshotted = sim.step();
   };
   sim.prepare();
   record();
@@ -164,7 +173,9 @@ int run(const Scene& scene, const RunOptions& opt) {
   const int maxThreads = omp_get_max_threads();
   ThreadTuner tuner(maxThreads, opt.fixedThreads);
   std::optional<Failure> failure;
+  int interrupted = 0;  // the signal that stopped the run (Interrupt.hpp)
   while (sim.time() < scene.endTime * (1 - 1e-12)) {
+    if ((interrupted = interruptSignal())) break;
     omp_set_num_threads(tuner.threads());
     const auto stepStart = clock::now();
     failure = sim.advance(std::min(nextSnapshot, scene.endTime) - sim.time());
@@ -194,6 +205,16 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.attribute("failure_cause", std::string(name(failure->cause)));
     file.attribute("failure", failure->message);
     snapshot(true);
+  } else if (interrupted) {
+    // The state of the last step is a good one (checked as every step's): the run file ends with
+    // it, so a run stopped on purpose keeps all it computed.
+    file.attribute("status", std::string("interrupted"));
+    file.attribute("interrupted_by", std::string(signalName(interrupted)));
+    file.attribute("failure_cause", std::string());
+    file.attribute("failure", std::string());
+    if (recorded != sim.step()) record();
+    if (snapshotted != sim.step()) snapshot(false);
+    file.appendSeries(series.columns);
   } else {
     file.attribute("status", std::string("stable"));
     file.attribute("failure_cause", std::string());
@@ -214,12 +235,15 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("max_volume_variation", series.maxVariation[0], m);
   for (std::size_t k = 0; k < scene.phases.size(); ++k)
     file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
-  file.flush();
+  file.finish();
 
   if (!opt.quiet) {
     std::printf("%s: %s at t = %.6g s after %ld steps, %zu particles, wall time %.2f s\n",
-                scene.name.c_str(), failure ? "UNSTABLE" : "done", sim.time(), sim.step(),
-                sim.particles().size(), wall);
+                scene.name.c_str(),
+                failure       ? "UNSTABLE"
+                : interrupted ? "interrupted"
+                              : "done",
+                sim.time(), sim.step(), sim.particles().size(), wall);
     std::printf("  max volume variation %.4f %%", 100 * series.maxVariation[0]);
     for (std::size_t k = 0; k < scene.phases.size(); ++k)
       std::printf("   %s %.4f %%", scene.phases[k].name.c_str(), 100 * series.maxVariation[k + 1]);
@@ -237,6 +261,13 @@ int run(const Scene& scene, const RunOptions& opt) {
               << "): " << failure->message << "\n";
     return exitNumericalFailure;
   }
+  if (interrupted) {
+    std::cerr << scene.file << ": interrupted by " << signalName(interrupted)
+              << " at t = " << sim.time() << " s (of " << scene.endTime << " s) after "
+              << sim.step() << " steps; the run file " << file.path()
+              << " holds the run so far (status interrupted)\n";
+    return exitInterrupted + interrupted;
+  }
   return exitDone;
 }
 
@@ -244,6 +275,10 @@ int run(const Scene& scene, const RunOptions& opt) {
 
 int runScene(const Scene& scene, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
+  RunLimits limits = options.limits;
+  limits.outDir = options.outDir;
+  RunEstimate estimate = checkMemory(scene, limits);
+  checkDuration(scene, limits, estimate);
   switch (scene.dimension) {
     case 1:
       return run<1>(scene, options);

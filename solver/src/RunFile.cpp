@@ -56,11 +56,33 @@ void writeArray(hid_t group, const std::string& name, hid_t type, const std::vec
 
 }  // namespace
 
-RunFile::RunFile(const std::string& path) : path_(path) {
+namespace {
+
+// <name>.h5 -> <name>.xdmf
+std::string xdmfOf(const std::string& h5) {
+  return std::filesystem::path(h5).replace_extension(".xdmf").string();
+}
+
+}  // namespace
+
+RunFile::RunFile(const std::string& path) : path_(path), writing_(path + ".partial") {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error(path + ": cannot create the run file");
+  file_ = H5Fcreate(writing_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error(writing_ + ": cannot create the run file");
   attribute("format", std::string("sph-run-1"));
+}
+
+void RunFile::finish() {
+  namespace fs = std::filesystem;
+  flush();
+  const herr_t closed = H5Fclose(file_);
+  file_ = -1;
+  if (closed < 0) throw std::runtime_error(writing_ + ": HDF5: closing the run file failed");
+  std::error_code e;
+  fs::rename(writing_, path_, e);
+  if (e) throw std::runtime_error(writing_ + ": cannot rename it to " + path_ + ": " + e.message());
+  writeXdmf(xdmfOf(path_), path_);
+  fs::remove(xdmfOf(path_) + ".partial", e);
 }
 
 RunFile::~RunFile() {
@@ -170,20 +192,19 @@ void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, 
   if (lastGood) attribute("last_good", std::int64_t{1}, name);
   snapshots_.push_back({name, time, f.density.size()});
   flush();
-  writeXdmf();
+  writeXdmf(xdmfOf(path_) + ".partial", writing_);
 }
 
 void RunFile::flush() {
   H5Fflush(file_, H5F_SCOPE_GLOBAL);
 }
 
-// XDMF 3 temporal collection of polyvertex grids pointing into the HDF5 file. Written to a
-// temporary file and renamed, so a reader never sees half of it.
-void RunFile::writeXdmf() const {
+// XDMF 3 temporal collection of polyvertex grids pointing into the HDF5 file `h5` (named
+// relative to the XDMF, which lies beside it). Written to a temporary file and renamed, so a reader
+// never sees half of it.
+void RunFile::writeXdmf(const std::string& xdmf, const std::string& h5) const {
   namespace fs = std::filesystem;
-  const fs::path h5(path_);
-  const fs::path xdmf = fs::path(h5).replace_extension(".xdmf");
-  const std::string file = h5.filename().string();
+  const std::string file = fs::path(h5).filename().string();
   std::ostringstream x;
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
     << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";

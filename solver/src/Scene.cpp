@@ -50,12 +50,18 @@ FaceKind faceKind(SceneTable& t, const std::string& key, const std::string& valu
 
 void readDomain(SceneTable domain, Scene& s) {
   const int D = s.dimension;
+  std::vector<std::string> keys{"lower", "upper", "ghost_pressure", "wall_velocity"}, faces;
+  for (int a = 0; a < D; ++a)
+    for (const char* side : {"_lower", "_upper"}) faces.push_back(axisName[a] + std::string(side));
+  keys.insert(keys.end(), faces.begin(), faces.end());
+  domain.allow(keys);
   s.lower = domain.vector("lower", D);
   s.upper = domain.vector("upper", D);
   for (int a = 0; a < D; ++a)
     if (!(s.upper[a] > s.lower[a]))
       domain.fail("upper", std::string("must exceed 'lower' along ") + axisName[a]);
   SceneTable velocity = domain.sub("wall_velocity");
+  velocity.allow(faces);
   for (int a = 0; a < D; ++a) {
     const std::string axis = axisName[a];
     std::vector<std::string> kinds(2);
@@ -84,7 +90,8 @@ void readPhases(std::vector<SceneTable> phases, Scene& s, SceneTable& top) {
   std::set<std::string> names;
   for (auto& t : phases) {
     Phase p;
-    p.name = t.string("name");
+    t.allow({"name", "rho0", "c0", "mu", "p0", "gamma"});
+    p.name = t.name("name");
     if (!names.insert(p.name).second) t.fail("name", "phase '" + p.name + "' defined twice");
     p.rho0 = t.positive("rho0");
     p.c0 = t.positive("c0");
@@ -165,6 +172,8 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
   if (fluids.empty()) top.fail("fluid", "missing: at least one [[fluid]] block");
   for (auto& t : fluids) {
     FluidBlock b;
+    t.allow({"shape", "lower", "upper", "center", "radius", "phase", "velocity",
+             "velocity_gradient", "initial_pressure", "surface", "initial", "packing"});
     const std::string shape = t.string("shape", "rectangle");
     if (shape == "rectangle") {
       b.lower = t.vector("lower", D);
@@ -210,6 +219,7 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
     }
     if (t.has("packing")) {
       SceneTable pk = t.sub("packing");
+      pk.allow({"alpha", "max_iterations", "stop_kinetic_energy"});
       if (!b.packed) t.fail("packing", "packing parameters need initial = \"packed\"");
       b.packingAlpha = pk.nonNegative("alpha", b.packingAlpha);
       b.packingMaxIterations =
@@ -246,17 +256,49 @@ KernelKind kernelKind(SceneTable& t, const std::string& v) {
   t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
 }
 
+// The domain as "[l0, u0] x [l1, u1]".
+std::string fmtBox(const Scene& s) {
+  std::string out;
+  for (int a = 0; a < s.dimension; ++a) out += (a ? " x " : "") + fmtRange(s.lower[a], s.upper[a]);
+  return out;
+}
+
+// A probe must look inside the domain: a pressure probe outside has no particle near it and
+// records 0 Pa for the whole run, a gauge beyond the walls an empty column.
+void checkProbeInside(SceneTable& t, const Probe& p, const Scene& s) {
+  const bool point = p.type == "pressure";
+  bool inside = true;
+  std::ostringstream at;
+  if (point) {
+    at << "(";
+    for (int a = 0; a < s.dimension; ++a) {
+      inside = inside && p.position[a] >= s.lower[a] && p.position[a] <= s.upper[a];
+      at << (a ? ", " : "") << p.position[a];
+    }
+    at << ")";
+  } else {
+    inside = p.x >= s.lower[0] && p.x <= s.upper[0];
+    at << "x = " << p.x;
+  }
+  if (!inside)
+    t.fail(point ? "position" : "x",
+           "probe '" + p.name + "' at " + at.str() + " lies outside the domain " + fmtBox(s));
+}
+
 void readProbes(std::vector<SceneTable> probes, Scene& s) {
   std::set<std::string> names;
   for (auto& t : probes) {
     Probe p;
-    p.name = t.string("name");
+    t.allow({"name", "type", "position", "x", "reference", "scale_length", "scale_height"});
+    p.name = t.name("name");
     if (!names.insert(p.name).second) t.fail("name", "probe '" + p.name + "' defined twice");
     p.type = t.string("type");
     if (p.type == "pressure") {
       p.position = t.vector("position", s.dimension);
+      checkProbeInside(t, p, s);
     } else if (p.type == "water_level" || p.type == "column_height") {
       p.x = t.number("x");
+      checkProbeInside(t, p, s);
     } else if (p.type != "surge_front") {
       t.fail("type", "unknown probe type '" + p.type +
                          "' (expected surge_front, column_height, pressure or water_level)");
@@ -306,6 +348,37 @@ void warnOnLowSoundSpeed(Scene& s) {
     }
 }
 
+// A block that holds no lattice node at dx (InitialParticles.hpp) is no fluid: a rectangle
+// thinner than dx/2 along an axis (round(width/dx) = 0), or a circle of fewer than one node across
+// (round(2r/dx) = 0), or of two whose nodes at dx/2 from the centre along every axis lie outside
+// it (r <= sqrt(D) dx/2; an odd count has the centre's node, four and more the ones at
+// sqrt(D) dx/2).
+void checkBlocksHoldParticles(const Scene& s) {
+  const int D = s.dimension;
+  for (std::size_t k = 0; k < s.fluids.size(); ++k) {
+    const FluidBlock& b = s.fluids[k];
+    const std::string block = "fluid[" + std::to_string(k) + "]";
+    std::ostringstream m;
+    m << s.file << ": key '" << block;
+    if (b.shape == FluidBlock::Shape::rectangle) {
+      for (int a = 0; a < D; ++a)
+        if ((b.upper[a] - b.lower[a]) / s.dx < 0.5) {
+          m << ".upper': the block is " << b.upper[a] - b.lower[a] << " m across along "
+            << axisName[a] << ", less than dx/2 = " << 0.5 * s.dx
+            << " m (numerics.dx): it would hold no particle";
+          throw SceneError(m.str());
+        }
+      continue;
+    }
+    const double across = 2.0 * b.radius / s.dx;
+    if (across < 0.5 || (across < 2.5 && across >= 1.5 && b.radius <= 0.5 * std::sqrt(D) * s.dx)) {
+      m << ".radius': a circle of radius " << b.radius
+        << " m holds no lattice node at dx = " << s.dx << " m (numerics.dx)";
+      throw SceneError(m.str());
+    }
+  }
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& file) {
@@ -322,7 +395,9 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.file = file;
   s.text = text;
   SceneTable top(root, "", s.file);
-  s.name = top.string("name");
+  top.allow({"name", "description", "dimension", "domain", "phase", "fluid", "physics", "numerics",
+             "output", "probe"});
+  s.name = top.name("name");
   top.string("description", "");
   const double dimension = top.number("dimension");  // 2.5 must not pass as 2
   if (dimension != 1 && dimension != 2 && dimension != 3)
@@ -334,6 +409,8 @@ Scene parseScene(const std::string& text, const std::string& file) {
   readFluids(top.array("fluid"), s, top);
 
   SceneTable physics = top.sub("physics");
+  physics.allow(
+      {"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
@@ -353,9 +430,21 @@ Scene parseScene(const std::string& text, const std::string& file) {
   physics.rejectUnknown();
 
   SceneTable numerics = top.sub("numerics");
+  numerics.allow({"kernel", "dx", "h_over_dx", "cfl_acoustic", "cfl_viscous", "cfl_force",
+                  "end_time", "density_band", "dt_floor", "neighbour_skin"});
   s.kernel = kernelKind(numerics, numerics.string("kernel", "quadratic"));
   s.dx = numerics.positive("dx");
   s.hOverDx = numerics.positive("h_over_dx", 1.33);
+  // Below 1 the kernel sum of a uniform lattice, sum_j dx^D W_ij, is off 1 by more than 12 %
+  // (quadratic kernel, 2-D: 1.12 at h/dx 1, 1.24 at 0.75, 1.91 at 0.5, against 1.05 at 1.33):
+  // the particles no longer see a continuum. Above 4 a particle lists some 240 neighbours in 2-D
+  // and 2900 in 3-D (11 kB of memory a particle, RunBudget.hpp) while the sum is within 0.2 % of
+  // 1 from h/dx 3 on: more only smooths the flow more (the O(h^2) error grows).
+  if (s.hOverDx < 1.0 || s.hOverDx > 4.0)
+    numerics.fail("h_over_dx", "must lie in [1, 4], got " + SceneTable::fmt(s.hOverDx) +
+                                   " (below 1 the kernel's support holds too few neighbours for "
+                                   "its sums to approximate integrals; above 4 it only smooths "
+                                   "and costs: solver/SCENES.md)");
   s.cflAcoustic = numerics.positive("cfl_acoustic", 0.25);
   s.cflViscous = numerics.positive("cfl_viscous", 0.125);
   s.cflForce = numerics.positive("cfl_force", 0.25);
@@ -371,8 +460,10 @@ Scene parseScene(const std::string& text, const std::string& file) {
   numerics.rejectUnknown();
   for (int a = 0; a < D; ++a)
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
+  checkBlocksHoldParticles(s);
 
   SceneTable output = top.sub("output");
+  output.allow({"snapshot_interval", "series_every"});
   s.snapshotInterval = output.nonNegative("snapshot_interval", 0.0);
   const long seriesEvery = output.integer("series_every", 1);
   if (seriesEvery < 1) output.fail("series_every", "must be a positive whole number");

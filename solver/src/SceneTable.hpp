@@ -1,7 +1,10 @@
 #pragma once
 // The scene readers' view of one TOML table (Scene.cpp, packing/PackingScene.cpp): it knows its
-// dotted path, reports every error against the file and the key (SceneError), and remembers which
-// keys were read so that unknown (misspelt) keys are rejected. Internal to the solver library.
+// dotted path, reports every error against the file, the line:column where the TOML has one, and
+// the key (SceneError), and rejects unknown (misspelt) keys with the nearest known key as a
+// suggestion. A reader that declares its table's keys (allow) has the unknown ones rejected before
+// it reads any, so `end_tme` is named as unknown, not `end_time` as missing. Internal to the
+// solver library.
 #include <toml++/toml.h>
 
 #include <Eigen/Dense>
@@ -9,9 +12,11 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "SceneNames.hpp"
 #include "sph/Scene.hpp"  // SceneError
 
 namespace sph {
@@ -22,16 +27,25 @@ class SceneTable {
       : t_(t), path_(std::move(path)), file_(file) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw SceneError(file_ + ": key '" + full(key) + "': " + what);
+    const toml::node* n = t_.get(key);
+    throw SceneError(where(n ? &n->source() : nullptr) + ": key '" + full(key) + "': " + what);
   }
   std::string full(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   bool has(const std::string& key) {
-    used_.insert(key);
+    use(key);
     return t_.contains(key);
+  }
+  // Declares every key the table may hold and rejects any other now, before a reader asks for a
+  // value that a misspelt key was meant to give. Reading an undeclared key later is a bug of the
+  // reader (std::logic_error).
+  void allow(const std::vector<std::string>& keys) {
+    allowed_.insert(keys.begin(), keys.end());
+    for (const auto& [k, v] : t_)
+      if (!allowed_.count(std::string(k.str()))) unknown(k, allowed_);
   }
 
   double number(const std::string& key, std::optional<double> fallback = std::nullopt) {
-    used_.insert(key);
+    use(key);
     const toml::node* n = t_.get(key);
     if (!n) {
       if (fallback) return *fallback;
@@ -60,7 +74,7 @@ class SceneTable {
     return v;
   }
   std::string string(const std::string& key, std::optional<std::string> fallback = std::nullopt) {
-    used_.insert(key);
+    use(key);
     const toml::node* n = t_.get(key);
     if (!n) {
       if (fallback) return *fallback;
@@ -69,16 +83,28 @@ class SceneTable {
     if (auto v = n->value<std::string>()) return *v;
     fail(key, std::string("wrong type: expected a string, got ") + typeName(*n));
   }
+  // A scene's name, a phase's or a probe's: a plain name (SceneNames.hpp).
+  std::string name(const std::string& key) {
+    const std::string v = string(key);
+    const std::string problem = nameProblem(v);
+    if (!problem.empty())
+      fail(key, "'" + v + "' is not a valid name: " + problem +
+                    " (names become file and HDF5 names; allowed: [A-Za-z0-9_.-], not starting "
+                    "with '.')");
+    return v;
+  }
+  // Only the TOML booleans: toml++ would read an integer as one (1 as true), which SCENES.md
+  // does not allow, so `morris_viscosity = 1` is refused rather than guessed.
   bool boolean(const std::string& key, bool fallback) {
-    used_.insert(key);
+    use(key);
     const toml::node* n = t_.get(key);
     if (!n) return fallback;
-    if (auto v = n->value<bool>()) return *v;
-    fail(key, std::string("wrong type: expected true or false, got ") + typeName(*n));
+    if (const auto* b = n->as_boolean()) return b->get();
+    fail(key, std::string("wrong type: must be true or false, got ") + typeName(*n));
   }
   std::vector<double> vector(const std::string& key, int size,
                              std::optional<std::vector<double>> fallback = std::nullopt) {
-    used_.insert(key);
+    use(key);
     const toml::node* n = t_.get(key);
     if (!n) {
       if (fallback) return *fallback;
@@ -101,7 +127,7 @@ class SceneTable {
   }
   // A size x size matrix written as an array of rows, returned row-major.
   std::vector<double> matrix(const std::string& key, int size) {
-    used_.insert(key);
+    use(key);
     const toml::node* n = t_.get(key);
     if (!n) fail(key, "missing value (an array of " + std::to_string(size) + " rows)");
     const toml::array* a = n->as_array();
@@ -127,14 +153,14 @@ class SceneTable {
     return out;
   }
   SceneTable sub(const std::string& key) {
-    used_.insert(key);
+    use(key);
     const toml::node* n = t_.get(key);
     if (!n) return SceneTable(empty(), full(key), file_);
     if (!n->is_table()) fail(key, std::string("wrong type: expected a table, got ") + typeName(*n));
     return SceneTable(*n->as_table(), full(key), file_);
   }
   std::vector<SceneTable> array(const std::string& key) {
-    used_.insert(key);
+    use(key);
     std::vector<SceneTable> out;
     const toml::node* n = t_.get(key);
     if (!n) return out;
@@ -149,7 +175,7 @@ class SceneTable {
   Eigen::Vector2d point(const std::string& key,
                         std::optional<Eigen::Vector2d> fallback = std::nullopt) {
     if (fallback && !t_.contains(key)) {
-      used_.insert(key);
+      use(key);
       return *fallback;
     }
     const std::vector<double> v = vector(key, 2);
@@ -158,7 +184,7 @@ class SceneTable {
   // Call after reading a table: any key never asked for is unknown.
   void rejectUnknown() const {
     for (const auto& [k, v] : t_)
-      if (!used_.count(std::string(k.str()))) fail(std::string(k.str()), "unknown key");
+      if (!used_.count(std::string(k.str()))) unknown(k, allowed_.empty() ? used_ : allowed_);
   }
 
   static std::string fmt(double v) {
@@ -168,6 +194,26 @@ class SceneTable {
   }
 
  private:
+  void use(const std::string& key) {
+    if (!allowed_.empty() && !allowed_.count(key))
+      throw std::logic_error("scene reader: key '" + full(key) + "' is read but not declared");
+    used_.insert(key);
+  }
+  // "file:line:column" where the TOML gives a place, else "file".
+  std::string where(const toml::source_region* at) const {
+    if (!at || at->begin.line == 0) return file_;
+    return file_ + ":" + std::to_string(at->begin.line) + ":" + std::to_string(at->begin.column);
+  }
+  [[noreturn]] void unknown(const toml::key& k, const std::set<std::string>& known) const {
+    const std::string typed(k.str());
+    std::string guess;
+    std::size_t best = ~std::size_t{0};
+    for (const auto& c : known)
+      if (nearMiss(typed, c) && editDistance(typed, c) < best)
+        guess = c, best = editDistance(typed, c);
+    throw SceneError(where(&k.source()) + ": key '" + full(typed) + "': unknown key" +
+                     (guess.empty() ? "" : " (did you mean '" + full(guess) + "'?)"));
+  }
   static const toml::table& empty() {
     static const toml::table e;
     return e;
@@ -193,7 +239,7 @@ class SceneTable {
   const toml::table& t_;
   std::string path_;
   const std::string& file_;
-  std::set<std::string> used_;
+  std::set<std::string> used_, allowed_;
 };
 
 }  // namespace sph

@@ -2,10 +2,14 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
+#include <new>
 #include <stdexcept>
 
+#include "sph/Interrupt.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
 #include "sph/packing/PackingScene.hpp"
@@ -13,13 +17,36 @@
 
 namespace {
 
-// Bad input (SceneError, invalid_argument: named by file and key) exits 2; anything else that stops
-// a run is the output failing to be written (HDF5, the file system) and exits 4.
+// Bad input (SceneError, invalid_argument: named by file and key) exits 2, an allocation that
+// failed 5; anything else that stops a run is the output failing to be written (HDF5, the file
+// system) and exits 4. Only here is std::bad_alloc caught: one thrown inside an OpenMP region
+// ends the program (std::terminate), which is why RunBudget refuses such scenes at the start.
 int reportError(const std::exception& e) {
+  if (dynamic_cast<const std::bad_alloc*>(&e)) {
+    std::cerr << "error: out of memory (" << e.what()
+              << "): the scene passed the memory estimate, but an allocation failed (other "
+                 "processes took the memory, or the estimate was short: sph run --max-memory "
+                 "sets a lower limit for it)\n";
+    return sph::exitOutOfMemory;
+  }
   std::cerr << "error: " << e.what() << "\n";
   const bool badInput = dynamic_cast<const sph::SceneError*>(&e) != nullptr ||
                         dynamic_cast<const std::invalid_argument*>(&e) != nullptr;
   return badInput ? sph::exitBadInput : sph::exitOutputError;
+}
+
+// --max-memory and --max-steps, for `run` and `check`.
+void addLimits(CLI::App* command, sph::RunLimits& limits, std::uint64_t& maxMemory) {
+  command
+      ->add_option("--max-memory", maxMemory,
+                   "refuse a scene estimated to need more memory than this, e.g. 8G (default: "
+                   "the memory available now)")
+      ->transform(CLI::AsSizeValue(false));
+  command
+      ->add_option("--max-steps", limits.maxSteps,
+                   "refuse a scene estimated to need more time steps than this")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 }
 
 }  // namespace
@@ -43,8 +70,15 @@ int main(int argc, char** argv) {
                 "run every step on --threads threads (default: time them against one thread now "
                 "and then and run the faster; results are the same either way)");
 
-  auto* check = app.add_subcommand("check", "read and validate a scene file, run nothing");
+  std::uint64_t maxMemory = 0;
+  addLimits(run, options.limits, maxMemory);
+
+  auto* check = app.add_subcommand(
+      "check", "read and validate a scene file and estimate its cost, run nothing");
   check->add_option("scene", scenePath, "scene file (TOML)")->required();
+  check->add_option("--out", options.outDir, "where the run would write (its free space)")
+      ->capture_default_str();
+  addLimits(check, options.limits, maxMemory);
 
   // Colagrossi et al. (2012) particle packing: its own scene format (validation/packing/README.md).
   sph::packing::PackOptions packOptions;
@@ -139,6 +173,7 @@ int main(int argc, char** argv) {
       return reportError(e);
     }
   }
+  options.limits.maxMemory = static_cast<double>(maxMemory);
   sph::Scene scene;
   try {
     scene = sph::readScene(scenePath);
@@ -148,11 +183,24 @@ int main(int argc, char** argv) {
   }
   for (const auto& w : scene.warnings) std::cerr << w << "\n";
   if (check->parsed()) {
-    std::cout << scenePath << ": ok (scene '" << scene.name << "', " << scene.dimension << "-D, "
-              << scene.fluids.size() << " fluid blocks, " << scene.phases.size() << " phases)\n";
-    return sph::exitDone;
+    try {
+      options.limits.outDir = options.outDir;
+      sph::RunEstimate e = sph::checkMemory(scene, options.limits);
+      sph::checkDuration(scene, options.limits, e);
+      std::cout << scenePath << ": ok (scene '" << scene.name << "', " << scene.dimension << "-D, "
+                << scene.fluids.size() << " fluid blocks, " << scene.phases.size() << " phases)\n"
+                << std::setprecision(3) << "  estimated: " << e.particles << " particles, "
+                << e.memory / 1048576.0 << " MiB of memory (" << e.available / 1048576.0
+                << " MiB available), " << e.steps << " steps (first dt " << e.firstDt << " s, "
+                << e.limiter << " limit), " << e.snapshots << " snapshots, "
+                << e.outputBytes / 1048576.0 << " MiB of output\n";
+      return sph::exitDone;
+    } catch (const std::exception& e) {
+      return reportError(e);
+    }
   }
   try {
+    sph::catchInterrupts();
     return sph::runScene(scene, options);
   } catch (const std::exception& e) {
     return reportError(e);

@@ -14,28 +14,6 @@ namespace {
 
 using namespace sph::core_tests;
 
-// The base scene with `from` (which must occur) replaced by `to`, written to the test's own
-// output directory; returns the path.
-std::string edited(const std::string& from, const std::string& to) {
-  std::string text = readText(scenePath("small_tank.toml"));
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "the base scene no longer contains '" << from << "'";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  const std::string path = freshOutputDirectory() + "/scene.toml";
-  writeText(path, text);
-  return path;
-}
-
-void expectRejected(const std::string& from, const std::string& to, const std::string& key,
-                    const std::string& problem) {
-  const std::string path = edited(from, to);
-  const ProgramResult r = runSph("check '" + path + "'");
-  EXPECT_EQ(r.exitCode, 2) << r.output;
-  EXPECT_NE(r.output.find(path), std::string::npos) << "file not named: " << r.output;
-  EXPECT_NE(r.output.find("'" + key + "'"), std::string::npos) << "key not named: " << r.output;
-  EXPECT_NE(r.output.find(problem), std::string::npos) << "problem not named: " << r.output;
-}
-
 TEST(BadInput, BaseSceneIsAccepted) {
   const ProgramResult r = runSph("check '" + scenePath("small_tank.toml") + "'");
   EXPECT_EQ(r.exitCode, 0) << r.output;
@@ -43,7 +21,7 @@ TEST(BadInput, BaseSceneIsAccepted) {
 }
 
 TEST(BadInput, MalformedToml) {
-  const std::string path = edited("dx = 0.01", "dx = = 0.01");
+  const std::string path = editedScene("dx = 0.01", "dx = = 0.01");
   // The line of `dx` in the base scene, which the parser's message must point at.
   const std::string text = readText(path);
   const auto line = 1 + std::count(text.begin(), text.begin() + text.find("dx = ="), '\n');
@@ -132,7 +110,7 @@ TEST(BadInput, NaNInArray) {
 // Lobovsky & Kren below eq. (8): c0 >= 10 max|v|. For this column sqrt(2 g H) = 1.4 m/s, so
 // c0 = 5 m/s is accepted with a warning that names the file, the phase and c0.
 TEST(BadInput, LowSoundSpeedWarns) {
-  const std::string path = edited("c0 = 20.0", "c0 = 5.0");
+  const std::string path = editedScene("c0 = 20.0", "c0 = 5.0");
   const ProgramResult r = runSph("check '" + path + "'");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find(path + ": warning"), std::string::npos) << r.output;
@@ -141,7 +119,7 @@ TEST(BadInput, LowSoundSpeedWarns) {
 }
 
 TEST(BadInput, RejectedSceneWritesNoRunFile) {
-  const std::string path = edited("dx = 0.01", "dx = 0.0");
+  const std::string path = editedScene("dx = 0.01", "dx = 0.0");
   const std::string out = std::filesystem::path(path).parent_path() / "out";
   const ProgramResult r = runSph("run '" + path + "' --out '" + out + "' --threads 1");
   EXPECT_EQ(r.exitCode, 2) << r.output;

@@ -1,19 +1,25 @@
 #include "ProgramHelpers.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace sph::core_tests {
 
-ProgramResult runSph(const std::string& arguments) {
-  const std::string command = std::string("'") + SPH_EXE + "' " + arguments + " 2>&1";
+ProgramResult runSph(const std::string& arguments, const std::string& shellPrefix) {
+  const std::string command =
+      shellPrefix + " '" + std::string(SPH_EXE) + "' " + arguments + " 2>&1";
   ProgramResult r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -23,6 +29,45 @@ ProgramResult runSph(const std::string& arguments) {
   const int status = pclose(pipe);
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+int startSph(const std::vector<std::string>& arguments, const std::string& log) {
+  std::vector<std::string> args{SPH_EXE};
+  args.insert(args.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd >= 0) dup2(fd, STDOUT_FILENO), dup2(fd, STDERR_FILENO);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+int waitForSph(int pid, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > end) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+bool waitForFile(const std::string& path, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (!std::filesystem::exists(path)) {
+    if (std::chrono::steady_clock::now() > end) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return true;
 }
 
 std::string freshOutputDirectory() {
@@ -48,6 +93,34 @@ std::string readText(const std::string& path) {
 
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
+}
+
+std::string editedScene(const std::vector<std::pair<std::string, std::string>>& edits,
+                        const std::string& base) {
+  std::string text = readText(scenePath(base));
+  for (const auto& [from, to] : edits) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "the base scene no longer contains '" << from << "'";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  const std::string path = freshOutputDirectory() + "/scene.toml";
+  writeText(path, text);
+  return path;
+}
+
+std::string editedScene(const std::string& from, const std::string& to) {
+  return editedScene({{from, to}});
+}
+
+std::string expectRejected(const std::string& from, const std::string& to, const std::string& key,
+                           const std::string& problem) {
+  const std::string path = editedScene(from, to);
+  const ProgramResult r = runSph("check '" + path + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(path), std::string::npos) << "file not named: " << r.output;
+  EXPECT_NE(r.output.find("'" + key + "'"), std::string::npos) << "key not named: " << r.output;
+  EXPECT_NE(r.output.find(problem), std::string::npos) << "problem not named: " << r.output;
+  return r.output;
 }
 
 namespace {

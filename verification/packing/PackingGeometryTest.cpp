@@ -113,8 +113,10 @@ TEST(PackingGeometry, SceneErrorsNameFileAndKey) {
   const std::string open =
       "[geometry]\nstart = [0.0, 0.0]\n[[geometry.path]]\nto = [1.0, 0.0]\n[[geometry.path]]\nto = "
       "[1.0, 1.0]\n";
+  // 8:1, the line and column of the first [[geometry.path]], where the TOML puts the array.
   EXPECT_EQ(message(open),
-            "scene.toml: key 'geometry.path': does not close: the last 'to' must equal 'start'");
+            "scene.toml:8:1: key 'geometry.path': does not close: the last 'to' must equal "
+            "'start'");
   const std::string badArc =
       "[geometry]\nstart = [1.0, 0.0]\n[[geometry.path]]\nto = [-1.0, 0.0]\ncenter = [0.5, 0.0]\n"
       "[[geometry.path]]\nto = [1.0, 0.0]\n";

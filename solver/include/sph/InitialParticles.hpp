@@ -22,6 +22,11 @@ struct PackedBlock {
   std::vector<packing::PackingRecord> history;
 };
 
+// The lattice nodes along an axis of a block `width` wide: round(width / dx), so a block of n dx
+// holds n and one thinner than dx/2 none. Throws std::overflow_error where the count would not
+// be exact in a double (RunBudget refuses such a dx before any particle is made).
+long latticeCount(double width, double dx);
+
 // `packed`, when given, receives one entry per block with initial = "packed".
 template <int D>
 Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* packed = nullptr);

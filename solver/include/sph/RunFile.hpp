@@ -1,7 +1,9 @@
 #pragma once
 // One HDF5 file per run (layout: reports/SCHEMA.md) and an XDMF sidecar so that ParaView opens
 // the snapshots as a time series. Flushed at every snapshot so that a killed run keeps what it
-// wrote.
+// wrote. Both are written as <path>.partial (the XDMF naming the partial HDF5 file) and renamed
+// into place by finish(): the run file of an earlier run into the same place stays whole until a
+// rerun has finished, whether the rerun is killed, runs out of disk or fails.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -24,8 +26,8 @@ struct SnapshotFields {
 
 class RunFile {
  public:
-  explicit RunFile(const std::string& path);  // creates or truncates
-  ~RunFile();
+  explicit RunFile(const std::string& path);  // creates or truncates <path>.partial
+  ~RunFile();  // without finish(): closes <path>.partial and leaves it there
   RunFile(const RunFile&) = delete;
   RunFile& operator=(const RunFile&) = delete;
 
@@ -40,12 +42,16 @@ class RunFile {
   void appendSeries(std::vector<SeriesColumn>& columns);
   void snapshot(double time, std::int64_t step, const SnapshotFields& f, bool lastGood = false);
   void flush();
+  // Closes the file and renames it to path(), then writes path()'s XDMF sidecar and removes the
+  // partial one. The file takes no more writes.
+  void finish();
 
-  const std::string& path() const { return path_; }
+  const std::string& path() const { return path_; }            // where finish() puts it
+  const std::string& writingPath() const { return writing_; }  // <path>.partial until then
 
  private:
-  void writeXdmf() const;
-  std::string path_;
+  void writeXdmf(const std::string& xdmf, const std::string& h5) const;
+  std::string path_, writing_;
   std::int64_t file_ = -1;
   struct Entry {
     std::string group;

@@ -73,9 +73,7 @@ PackingScene parsePackingScene(const std::string& text, const std::string& file)
     throw SceneError(msg.str());
   }
   SceneTable top(root, "", s.file);
-  s.name = top.string("name");
-  if (s.name.empty() || s.name.find_first_of("/\\ ") != std::string::npos)
-    top.fail("name", "must be a non-empty file name without spaces or slashes");
+  s.name = top.name("name");
   s.description = top.string("description", "");
   readGeometry(top.sub("geometry"), s);
 
@@ -296,6 +294,7 @@ int packScene(const PackingScene& s, const PackOptions& options) {
                 << (finite ? "did not reach" : "produced a non-finite value before") << " T/beta < "
                 << s.parameters.stopKineticEnergy << " within " << s.parameters.maxIterations
                 << " iterations\n";
+    out.finish();
   }
   // Beside the snapshots: H |grad Gamma| per fluid particle before and after, and the solid
   // particles (kind 0 wall, 1 free surface), which the SPH start does not carry.
