@@ -409,8 +409,8 @@ Scene parseScene(const std::string& text, const std::string& file) {
   readFluids(top.array("fluid"), s, top);
 
   SceneTable physics = top.sub("physics");
-  physics.allow(
-      {"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h"});
+  physics.allow({"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h",
+                 "density_diffusion"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
