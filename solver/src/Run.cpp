@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 
 #include "sph/Diagnostics.hpp"
 #include "sph/EnergyBudget.hpp"
@@ -284,9 +286,11 @@ int runScene(const Scene& scene, const RunOptions& options) {
       return run<1>(scene, options);
     case 2:
       return run<2>(scene, options);
-    default:
+    case 3:
       return run<3>(scene, options);
   }
+  // The scene reader admits 1, 2 and 3 only.
+  throw std::logic_error("runScene: dimension " + std::to_string(scene.dimension));
 }
 
 }  // namespace sph

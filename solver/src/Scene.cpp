@@ -7,6 +7,8 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "SceneTable.hpp"
 
@@ -18,9 +20,12 @@ std::string_view name(KernelKind k) {
       return "quadratic";
     case KernelKind::cubic_spline:
       return "cubic_spline";
-    default:
+    case KernelKind::wendland_c2:
       return "wendland_c2";
   }
+  // No default: -Wswitch names an enumerator missing above; any other value is a bug.
+  throw std::logic_error("name: KernelKind " + std::to_string(static_cast<int>(k)) +
+                         " is not a kernel this build knows");
 }
 
 std::string_view name(FaceKind k) {
@@ -31,9 +36,11 @@ std::string_view name(FaceKind k) {
       return "free_slip";
     case FaceKind::no_slip:
       return "no_slip";
-    default:
+    case FaceKind::periodic:
       return "periodic";
   }
+  throw std::logic_error("name: FaceKind " + std::to_string(static_cast<int>(k)) +
+                         " is not a face this build knows");
 }
 
 namespace {

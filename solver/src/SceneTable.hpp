@@ -232,9 +232,14 @@ class SceneTable {
         return "an array";
       case toml::node_type::table:
         return "a table";
-      default:
+      case toml::node_type::date:
+      case toml::node_type::time:
+      case toml::node_type::date_time:
         return "a date or time";
+      case toml::node_type::none:
+        return "nothing";
     }
+    return "a value of an unknown TOML type";  // toml++ added a type: named, not mistaken
   }
   const toml::table& t_;
   std::string path_;

@@ -171,4 +171,5 @@ TEST(Kernels, SlopeAtOrigin) {
 // An enum value the code does not know is an error, never the last kernel (exhaustive switches).
 TEST(Kernels, UnknownKindIsAnError) {
   EXPECT_THROW(sph::kernelValue<2>(static_cast<sph::KernelKind>(7), 0.1, 1.0), std::logic_error);
+  EXPECT_THROW(sph::name(static_cast<sph::KernelKind>(7)), std::logic_error);
 }
