@@ -57,9 +57,11 @@ void writeAttribute(hid_t object, const std::string& name, hid_t type, const voi
 
 hid_t stringType(std::size_t length, const std::string& path) {
   const hid_t t = H5Tcopy(H5T_C_S1);
-  if (t < 0 || H5Tset_size(t, std::max<std::size_t>(length, 1)) < 0 ||
-      H5Tset_cset(t, H5T_CSET_UTF8) < 0)
+  if (t < 0) hdf5::fail(path, "a string type");
+  if (H5Tset_size(t, std::max<std::size_t>(length, 1)) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
+    H5Tclose(t);
     hdf5::fail(path, "a string type");
+  }
   return t;
 }
 
@@ -144,14 +146,19 @@ void RunFile::finish() {
   flush();
   const herr_t closed = H5Fclose(file_);
   file_ = -1;
+  broken_ = true;  // no more writes
   if (closed < 0) hdf5::fail(writing_, "closing the run file");
-  std::error_code e;
-  fs::rename(writing_, path_, e);
-  if (e) throw OutputError(writing_ + ": cannot rename it to " + path_ + " (" + e.message() + ")");
+  // The final sidecar (naming <name>.h5) first, as the partial one, so that a failure to write it
+  // leaves the earlier run's pair in place; then both renamed.
   std::vector<XdmfSnapshot> entries;
   for (const Entry& s : snapshots_) entries.push_back({s.group, s.time, s.n});
-  writeXdmf(xdmfOf(path_), path_, entries);
-  fs::remove(xdmfOf(path_) + ".partial", e);
+  const std::string xdmf = xdmfOf(path_);
+  writeXdmf(xdmf + ".partial", path_, entries);
+  for (const auto& [from, to] : {std::pair{writing_, path_}, std::pair{xdmf + ".partial", xdmf}}) {
+    std::error_code e;
+    fs::rename(from, to, e);
+    if (e) throw OutputError(from + ": cannot rename it to " + to + " (" + e.message() + ")");
+  }
 }
 
 double RunFile::room(std::string& limit) const {
