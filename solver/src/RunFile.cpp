@@ -1,245 +1,342 @@
 #include "sph/RunFile.hpp"
 
 #include <hdf5.h>
+#include <sys/resource.h>
+#include <sys/statvfs.h>
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
+#include <utility>
+
+#include "Hdf5Checked.hpp"
+#include "XdmfSidecar.hpp"
 
 namespace sph {
 
 namespace {
 
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what + " failed");
+using hdf5::check;
+using hdf5::Handle;
+
+// HDF5 closes what is left open at exit (atexit). A file whose close failed (a full disk) stays in
+// its tables half closed, and closing it again there segfaulted: the library is told to leave it.
+// Set before any other HDF5 call, at static initialisation.
+[[maybe_unused]] const bool noCleanupAtExit = (H5dont_atexit(), true);
+
+// Whether the absolute path `group` exists: H5Lexists fails (rather than says no) where a
+// component above the last is missing, so each is asked in turn.
+bool exists(hid_t file, const std::string& group, const std::string& path) {
+  for (std::size_t end = group.find('/', 1);; end = group.find('/', end + 1)) {
+    const std::string part = group.substr(0, end);
+    const htri_t e = H5Lexists(file, part.c_str(), H5P_DEFAULT);
+    if (e < 0) hdf5::fail(path, "looking up " + part);
+    if (e == 0) return false;
+    if (end == std::string::npos) return true;
+  }
 }
 
-hid_t openGroup(hid_t file, const std::string& group) {
+hid_t openGroup(hid_t file, const std::string& group, const std::string& path) {
   if (group == "/") return H5Gopen2(file, "/", H5P_DEFAULT);
-  if (H5Lexists(file, group.c_str(), H5P_DEFAULT) > 0)
-    return H5Gopen2(file, group.c_str(), H5P_DEFAULT);
-  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
-  H5Pset_create_intermediate_group(lcpl, 1);
-  hid_t g = H5Gcreate2(file, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  H5Pclose(lcpl);
-  return g;
+  if (exists(file, group, path)) return H5Gopen2(file, group.c_str(), H5P_DEFAULT);
+  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose, path, "a property list");
+  check(H5Pset_create_intermediate_group(lcpl, 1), path, "a property list");
+  return H5Gcreate2(file, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
 }
 
-void writeAttribute(hid_t file, const std::string& group, const std::string& name, hid_t type,
-                    const void* data) {
-  hid_t g = openGroup(file, group);
-  if (H5Aexists(g, name.c_str()) > 0) H5Adelete(g, name.c_str());
-  hid_t space = H5Screate(H5S_SCALAR);
-  hid_t a = H5Acreate2(g, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  check(H5Awrite(a, type, data), "writing attribute " + name);
-  H5Aclose(a), H5Sclose(space), H5Gclose(g);
+void writeAttribute(hid_t object, const std::string& name, hid_t type, const void* data,
+                    const std::string& path) {
+  const htri_t exists = H5Aexists(object, name.c_str());
+  if (exists < 0) hdf5::fail(path, "looking up attribute " + name);
+  if (exists > 0) check(H5Adelete(object, name.c_str()), path, "replacing attribute " + name);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, path, "a dataspace");
+  Handle a(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose, path,
+           "creating attribute " + name);
+  check(H5Awrite(a, type, data), path, "writing attribute " + name);
 }
 
-hid_t stringType(std::size_t length) {
-  hid_t t = H5Tcopy(H5T_C_S1);
-  H5Tset_size(t, std::max<std::size_t>(length, 1));
-  H5Tset_cset(t, H5T_CSET_UTF8);
+hid_t stringType(std::size_t length, const std::string& path) {
+  const hid_t t = H5Tcopy(H5T_C_S1);
+  if (t < 0) hdf5::fail(path, "a string type");
+  if (H5Tset_size(t, std::max<std::size_t>(length, 1)) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
+    H5Tclose(t);
+    hdf5::fail(path, "a string type");
+  }
   return t;
 }
 
 template <class T>
 void writeArray(hid_t group, const std::string& name, hid_t type, const std::vector<T>& data,
-                std::size_t columns) {
+                std::size_t columns, const std::string& path) {
   hsize_t dims[2] = {data.size() / columns, columns};
-  hid_t space = H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr);
-  hid_t d = H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (!data.empty()) check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), name);
-  H5Dclose(d), H5Sclose(space);
+  Handle space(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr), H5Sclose, path,
+               "a dataspace");
+  Handle d(H5Dcreate2(group, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+           H5Dclose, path, "creating dataset " + name);
+  if (!data.empty())
+    check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), path, name);
 }
-
-}  // namespace
-
-namespace {
 
 // <name>.h5 -> <name>.xdmf
 std::string xdmfOf(const std::string& h5) {
   return std::filesystem::path(h5).replace_extension(".xdmf").string();
 }
 
+// What a snapshot adds besides its arrays (groups, dataset headers, attributes) and what a series
+// append may add (a new 1024-entry chunk of 8 bytes per column), with room to spare: 256 KiB.
+constexpr double reserve = 256.0 * 1024.0;
+
 }  // namespace
 
 RunFile::RunFile(const std::string& path) : path_(path), writing_(path + ".partial") {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   file_ = H5Fcreate(writing_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error(writing_ + ": cannot create the run file");
+  if (file_ < 0) hdf5::fail(writing_, "creating the run file");
+  std::string limit;
+  const double left = room(limit);
+  if (left < reserve) {  // no room to start: nothing is left behind
+    H5Fclose(file_);
+    file_ = -1;
+    std::error_code ignored;
+    std::filesystem::remove(writing_, ignored);
+    std::ostringstream m;
+    m.precision(3);
+    m << writing_ << ": only " << left / 1048576.0 << " MiB left " << limit
+      << ": the run cannot start";
+    throw OutputError(m.str());
+  }
   attribute("format", std::string("sph-run-1"));
+}
+
+RunFile::~RunFile() {
+  if (file_ >= 0) H5Fclose(file_);  // a failure here has been reported, or the run is failing
+}
+
+template <class Write>
+void RunFile::guarded(Write&& write) {
+  if (broken_ || file_ < 0)
+    throw OutputError(writing_ + ": the run file takes no more writes (an earlier one failed)");
+  try {
+    write();
+  } catch (const OutputError& e) {
+    markFailed(e.what());
+    throw;
+  }
+}
+
+void RunFile::markFailed(const std::string& why) {
+  if (broken_) return;
+  broken_ = true;
+  // Best effort: after a failed HDF5 write these fail too, after a failed XDMF write they hold.
+  try {
+    Handle root(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose, writing_, "opening /");
+    const std::string status = "output_error";
+    for (const auto& [name, value] : {std::pair{"status", status}, std::pair{"failure", why}}) {
+      Handle t(stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
+      writeAttribute(root, name, t, value.c_str(), writing_);
+    }
+    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), writing_, "flushing the run file");
+  } catch (const OutputError&) {
+  }
 }
 
 void RunFile::finish() {
   namespace fs = std::filesystem;
+  ensureRoom(0.0);
   flush();
   const herr_t closed = H5Fclose(file_);
   file_ = -1;
-  if (closed < 0) throw std::runtime_error(writing_ + ": HDF5: closing the run file failed");
-  std::error_code e;
-  fs::rename(writing_, path_, e);
-  if (e) throw std::runtime_error(writing_ + ": cannot rename it to " + path_ + ": " + e.message());
-  writeXdmf(xdmfOf(path_), path_);
-  fs::remove(xdmfOf(path_) + ".partial", e);
+  broken_ = true;  // no more writes
+  if (closed < 0) hdf5::fail(writing_, "closing the run file");
+  // The final sidecar (naming <name>.h5) first, as the partial one, so that a failure to write it
+  // leaves the earlier run's pair in place; then both renamed.
+  std::vector<XdmfSnapshot> entries;
+  for (const Entry& s : snapshots_) entries.push_back({s.group, s.time, s.n});
+  const std::string xdmf = xdmfOf(path_);
+  writeXdmf(xdmf + ".partial", path_, entries);
+  for (const auto& [from, to] : {std::pair{writing_, path_}, std::pair{xdmf + ".partial", xdmf}}) {
+    std::error_code e;
+    fs::rename(from, to, e);
+    if (e) throw OutputError(from + ": cannot rename it to " + to + " (" + e.message() + ")");
+  }
 }
 
-RunFile::~RunFile() {
-  if (file_ >= 0) H5Fclose(file_);
+double RunFile::room(std::string& limit) const {
+  namespace fs = std::filesystem;
+  double room = 1e300;
+  struct statvfs v {};
+  if (statvfs(fs::absolute(writing_).parent_path().c_str(), &v) == 0) {
+    room = static_cast<double>(v.f_bavail) * static_cast<double>(v.f_frsize);
+    limit = "free on its file system";
+  }
+  // ulimit -f applies to each file: the HDF5 file, and the XDMF sidecar, rewritten whole with
+  // some 1.7 kB a snapshot.
+  rlimit fsize{};
+  if (getrlimit(RLIMIT_FSIZE, &fsize) == 0 && fsize.rlim_cur != RLIM_INFINITY) {
+    std::error_code e;
+    const double size = static_cast<double>(fs::file_size(writing_, e));
+    const double cap = static_cast<double>(fsize.rlim_cur);
+    const double left = std::min(cap - (e ? 0.0 : size), cap - 1700.0 * (snapshots_.size() + 2));
+    if (left < room) room = left, limit = "below the file size limit (ulimit -f)";
+  }
+  return std::max(room, 0.0);
+}
+
+void RunFile::ensureRoom(double bytes) {
+  const double need = 2.0 * bytes + reserve;
+  std::string limit;
+  const double room = this->room(limit);
+  if (room >= need) return;
+  std::ostringstream m;
+  m.precision(3);
+  m << writing_ << ": only " << room / 1048576.0 << " MiB left " << limit << ", and the next "
+    << (bytes > 0 ? "snapshot needs" : "writes need") << " about " << need / 1048576.0
+    << " MiB: the run stops here; the file holds the run to ";
+  if (snapshots_.empty())
+    m << "its start";
+  else
+    m << "t = " << snapshots_.back().time << " s (its last snapshot), status output_error";
+  markFailed(m.str());  // within the reserve
+  throw OutputError(m.str());
 }
 
 void RunFile::attribute(const std::string& name, const std::string& value,
                         const std::string& group) {
-  hid_t t = stringType(value.size());
-  writeAttribute(file_, group, name, t, value.c_str());
-  H5Tclose(t);
+  guarded([&] {
+    Handle t(stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
+    Handle g(openGroup(file_, group, writing_), H5Gclose, writing_, "opening " + group);
+    writeAttribute(g, name, t, value.c_str(), writing_);
+  });
 }
 void RunFile::attribute(const std::string& name, double value, const std::string& group) {
-  writeAttribute(file_, group, name, H5T_NATIVE_DOUBLE, &value);
+  guarded([&] {
+    Handle g(openGroup(file_, group, writing_), H5Gclose, writing_, "opening " + group);
+    writeAttribute(g, name, H5T_NATIVE_DOUBLE, &value, writing_);
+  });
 }
 void RunFile::attribute(const std::string& name, std::int64_t value, const std::string& group) {
-  writeAttribute(file_, group, name, H5T_NATIVE_INT64, &value);
+  guarded([&] {
+    Handle g(openGroup(file_, group, writing_), H5Gclose, writing_, "opening " + group);
+    writeAttribute(g, name, H5T_NATIVE_INT64, &value, writing_);
+  });
 }
 
 void RunFile::text(const std::string& dataset, const std::string& value) {
-  hid_t t = stringType(value.size());
-  hid_t space = H5Screate(H5S_SCALAR);
-  hid_t d = H5Dcreate2(file_, dataset.c_str(), t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  check(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()), dataset);
-  H5Dclose(d), H5Sclose(space), H5Tclose(t);
+  guarded([&] {
+    Handle t(stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose, writing_, "a dataspace");
+    Handle d(H5Dcreate2(file_, dataset.c_str(), t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose, writing_, "creating " + dataset);
+    check(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()), writing_, dataset);
+  });
 }
 
 void RunFile::array(const std::string& group, const std::string& name,
                     const std::vector<double>& values) {
-  hid_t g = openGroup(file_, group);
-  writeArray(g, name, H5T_NATIVE_DOUBLE, values, 1);
-  H5Gclose(g);
+  guarded([&] {
+    Handle g(openGroup(file_, group, writing_), H5Gclose, writing_, "opening " + group);
+    writeArray(g, name, H5T_NATIVE_DOUBLE, values, 1, writing_);
+  });
 }
 
-void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
-  hid_t g = openGroup(file_, "/series");
-  for (auto& c : columns) {
-    // step and dt_limiter are integers in the schema; everything else is double.
-    const bool isStep = c.name == "step", isLimiter = c.name == "dt_limiter";
-    const hid_t type = isStep ? H5T_NATIVE_INT64 : isLimiter ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE;
-    hid_t d;
-    if (H5Lexists(g, c.name.c_str(), H5P_DEFAULT) > 0) {
-      d = H5Dopen2(g, c.name.c_str(), H5P_DEFAULT);
-    } else {
-      hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = 1024;
-      hid_t space = H5Screate_simple(1, &zero, &unlimited);
-      hid_t plist = H5Pcreate(H5P_DATASET_CREATE);
-      H5Pset_chunk(plist, 1, &chunk);
-      d = H5Dcreate2(g, c.name.c_str(), type, space, H5P_DEFAULT, plist, H5P_DEFAULT);
-      H5Pclose(plist), H5Sclose(space);
-      for (const auto& [key, value] : c.text) {
-        hid_t t = stringType(value.size()), s = H5Screate(H5S_SCALAR);
-        hid_t a = H5Acreate2(d, key.c_str(), t, s, H5P_DEFAULT, H5P_DEFAULT);
-        check(H5Awrite(a, t, value.c_str()), "attribute " + key);
-        H5Aclose(a), H5Sclose(s), H5Tclose(t);
-      }
-      for (const auto& [key, value] : c.numbers) {
-        hid_t s = H5Screate(H5S_SCALAR);
-        hid_t a = H5Acreate2(d, key.c_str(), H5T_NATIVE_DOUBLE, s, H5P_DEFAULT, H5P_DEFAULT);
-        check(H5Awrite(a, H5T_NATIVE_DOUBLE, &value), "attribute " + key);
-        H5Aclose(a), H5Sclose(s);
-      }
+namespace {
+
+// /series/<name>: opened, or made (chunked, extendable) with its attributes.
+hid_t seriesColumn(hid_t g, const SeriesColumn& c, hid_t type, const std::string& path) {
+  const std::string where = "/series/" + c.name;
+  const htri_t exists = H5Lexists(g, c.name.c_str(), H5P_DEFAULT);
+  if (exists < 0) hdf5::fail(path, "looking up " + where);
+  if (exists > 0) return H5Dopen2(g, c.name.c_str(), H5P_DEFAULT);
+  hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = 1024;
+  Handle space(H5Screate_simple(1, &zero, &unlimited), H5Sclose, path, "a dataspace");
+  Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, path, "a property list");
+  check(H5Pset_chunk(plist, 1, &chunk), path, "chunking " + where);
+  const hid_t d = H5Dcreate2(g, c.name.c_str(), type, space, H5P_DEFAULT, plist, H5P_DEFAULT);
+  if (d < 0) hdf5::fail(path, "creating " + where);
+  try {
+    for (const auto& [key, value] : c.text) {
+      Handle t(stringType(value.size(), path), H5Tclose, path, "a string type");
+      writeAttribute(d, key, t, value.c_str(), path);
     }
-    if (d < 0) throw std::runtime_error("HDF5: cannot open /series/" + c.name);
-    hid_t space = H5Dget_space(d);
-    hsize_t old = 0;
-    H5Sget_simple_extent_dims(space, &old, nullptr);
-    H5Sclose(space);
-    hsize_t add = c.values.size(), total = old + add;
-    if (add > 0) {
-      check(H5Dset_extent(d, &total), "extending /series/" + c.name);
-      hid_t file = H5Dget_space(d);
-      H5Sselect_hyperslab(file, H5S_SELECT_SET, &old, nullptr, &add, nullptr);
-      hid_t mem = H5Screate_simple(1, &add, nullptr);
-      if (isStep || isLimiter) {
-        std::vector<std::int64_t> v(c.values.begin(), c.values.end());
-        std::vector<std::int32_t> w(c.values.begin(), c.values.end());
-        check(isStep ? H5Dwrite(d, H5T_NATIVE_INT64, mem, file, H5P_DEFAULT, v.data())
-                     : H5Dwrite(d, H5T_NATIVE_INT32, mem, file, H5P_DEFAULT, w.data()),
-              "/series/" + c.name);
-      } else {
-        check(H5Dwrite(d, H5T_NATIVE_DOUBLE, mem, file, H5P_DEFAULT, c.values.data()),
-              "/series/" + c.name);
-      }
-      H5Sclose(mem), H5Sclose(file);
-    }
+    for (const auto& [key, value] : c.numbers)
+      writeAttribute(d, key, H5T_NATIVE_DOUBLE, &value, path);
+  } catch (...) {
     H5Dclose(d);
-    c.values.clear();
+    throw;
   }
-  H5Gclose(g);
+  return d;
+}
+
+}  // namespace
+
+void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
+  guarded([&] {
+    Handle g(openGroup(file_, "/series", writing_), H5Gclose, writing_, "opening /series");
+    for (auto& c : columns) {
+      // step and dt_limiter are integers in the schema; everything else is double.
+      const bool isStep = c.name == "step", isLimiter = c.name == "dt_limiter";
+      const hid_t type = isStep      ? H5T_NATIVE_INT64
+                         : isLimiter ? H5T_NATIVE_INT32
+                                     : H5T_NATIVE_DOUBLE;
+      const std::string where = "/series/" + c.name;
+      Handle d(seriesColumn(g, c, type, writing_), H5Dclose, writing_, "opening " + where);
+      Handle space(H5Dget_space(d), H5Sclose, writing_, "the extent of " + where);
+      hsize_t old = 0;
+      if (H5Sget_simple_extent_dims(space, &old, nullptr) < 0)
+        hdf5::fail(writing_, "the extent of " + where);
+      hsize_t add = c.values.size(), total = old + add;
+      if (add > 0) {
+        check(H5Dset_extent(d, &total), writing_, "extending " + where);
+        Handle file(H5Dget_space(d), H5Sclose, writing_, "the extent of " + where);
+        check(H5Sselect_hyperslab(file, H5S_SELECT_SET, &old, nullptr, &add, nullptr), writing_,
+              "selecting in " + where);
+        Handle mem(H5Screate_simple(1, &add, nullptr), H5Sclose, writing_, "a dataspace");
+        if (isStep) {
+          std::vector<std::int64_t> v(c.values.begin(), c.values.end());
+          check(H5Dwrite(d, H5T_NATIVE_INT64, mem, file, H5P_DEFAULT, v.data()), writing_, where);
+        } else if (isLimiter) {
+          std::vector<std::int32_t> w(c.values.begin(), c.values.end());
+          check(H5Dwrite(d, H5T_NATIVE_INT32, mem, file, H5P_DEFAULT, w.data()), writing_, where);
+        } else {
+          check(H5Dwrite(d, H5T_NATIVE_DOUBLE, mem, file, H5P_DEFAULT, c.values.data()), writing_,
+                where);
+        }
+      }
+      c.values.clear();
+    }
+  });
 }
 
 void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, bool lastGood) {
+  const double bytes = 8.0 * (f.position.size() + f.velocity.size() + f.density.size() +
+                              f.pressure.size() + f.h.size() + f.mass.size()) +
+                       4.0 * f.phase.size();
+  ensureRoom(bytes);
   char name[32];
   std::snprintf(name, sizeof name, "/snapshots/%05zu", snapshots_.size());
-  hid_t g = openGroup(file_, name);
-  writeArray(g, "position", H5T_NATIVE_DOUBLE, f.position, 3);
-  writeArray(g, "velocity", H5T_NATIVE_DOUBLE, f.velocity, 3);
-  writeArray(g, "density", H5T_NATIVE_DOUBLE, f.density, 1);
-  writeArray(g, "pressure", H5T_NATIVE_DOUBLE, f.pressure, 1);
-  writeArray(g, "h", H5T_NATIVE_DOUBLE, f.h, 1);
-  writeArray(g, "mass", H5T_NATIVE_DOUBLE, f.mass, 1);
-  writeArray(g, "phase", H5T_NATIVE_INT32, f.phase, 1);
-  H5Gclose(g);
-  attribute("time", time, name);
-  attribute("step", step, name);
-  if (lastGood) attribute("last_good", std::int64_t{1}, name);
-  snapshots_.push_back({name, time, f.density.size()});
+  guarded([&] {
+    Handle g(openGroup(file_, name, writing_), H5Gclose, writing_, std::string("creating ") + name);
+    writeArray(g, "position", H5T_NATIVE_DOUBLE, f.position, 3, writing_);
+    writeArray(g, "velocity", H5T_NATIVE_DOUBLE, f.velocity, 3, writing_);
+    writeArray(g, "density", H5T_NATIVE_DOUBLE, f.density, 1, writing_);
+    writeArray(g, "pressure", H5T_NATIVE_DOUBLE, f.pressure, 1, writing_);
+    writeArray(g, "h", H5T_NATIVE_DOUBLE, f.h, 1, writing_);
+    writeArray(g, "mass", H5T_NATIVE_DOUBLE, f.mass, 1, writing_);
+    writeArray(g, "phase", H5T_NATIVE_INT32, f.phase, 1, writing_);
+    writeAttribute(g, "time", H5T_NATIVE_DOUBLE, &time, writing_);
+    writeAttribute(g, "step", H5T_NATIVE_INT64, &step, writing_);
+    const std::int64_t one = 1;
+    if (lastGood) writeAttribute(g, "last_good", H5T_NATIVE_INT64, &one, writing_);
+  });
   flush();
-  writeXdmf(xdmfOf(path_) + ".partial", writing_);
+  snapshots_.push_back({name, time, f.density.size()});
+  std::vector<XdmfSnapshot> entries;
+  for (const Entry& s : snapshots_) entries.push_back({s.group, s.time, s.n});
+  guarded([&] { writeXdmf(xdmfOf(path_) + ".partial", writing_, entries); });
 }
 
 void RunFile::flush() {
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
-}
-
-// XDMF 3 temporal collection of polyvertex grids pointing into the HDF5 file `h5` (named
-// relative to the XDMF, which lies beside it). Written to a temporary file and renamed, so a reader
-// never sees half of it.
-void RunFile::writeXdmf(const std::string& xdmf, const std::string& h5) const {
-  namespace fs = std::filesystem;
-  const std::string file = fs::path(h5).filename().string();
-  std::ostringstream x;
-  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-    << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  auto item = [&](const Entry& e, const std::string& field, int cols, const char* type, int bytes) {
-    x << "      <DataItem Dimensions=\"" << e.n << (cols > 1 ? " 3" : "") << "\" NumberType=\""
-      << type << "\" Precision=\"" << bytes << "\" Format=\"HDF\">" << file << ":" << e.group << "/"
-      << field << "</DataItem>\n";
-  };
-  for (const Entry& e : snapshots_) {
-    x << "   <Grid Name=\"" << e.group.substr(e.group.rfind('/') + 1)
-      << "\" GridType=\"Uniform\">\n"
-      << "    <Time Value=\"" << e.time << "\"/>\n"
-      << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.n
-      << "\" NodesPerElement=\"1\"/>\n    <Geometry GeometryType=\"XYZ\">\n";
-    item(e, "position", 3, "Float", 8);
-    x << "    </Geometry>\n";
-    x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    item(e, "velocity", 3, "Float", 8);
-    x << "    </Attribute>\n";
-    for (const char* s : {"density", "pressure", "h", "mass"}) {
-      x << "    <Attribute Name=\"" << s << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-      item(e, s, 1, "Float", 8);
-      x << "    </Attribute>\n";
-    }
-    x << "    <Attribute Name=\"phase\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-    item(e, "phase", 1, "Int", 4);
-    x << "    </Attribute>\n   </Grid>\n";
-  }
-  x << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  const fs::path tmp = fs::path(xdmf).concat(".tmp");
-  {
-    std::ofstream out(tmp);
-    out << x.str();
-  }
-  fs::rename(tmp, xdmf);
+  guarded([&] { check(H5Fflush(file_, H5F_SCOPE_GLOBAL), writing_, "flushing the run file"); });
 }
 
 }  // namespace sph

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -39,6 +40,8 @@ int startSph(const std::vector<std::string>& arguments, const std::string& log) 
   argv.push_back(nullptr);
   const pid_t pid = fork();
   if (pid == 0) {
+    // Ends with the test: a test that fails or is killed (ctest's timeout) leaves no run behind.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
     if (fd >= 0) dup2(fd, STDOUT_FILENO), dup2(fd, STDERR_FILENO);
     execv(argv[0], argv.data());

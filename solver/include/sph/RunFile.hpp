@@ -4,7 +4,15 @@
 // wrote. Both are written as <path>.partial (the XDMF naming the partial HDF5 file) and renamed
 // into place by finish(): the run file of an earlier run into the same place stays whole until a
 // rerun has finished, whether the rerun is killed, runs out of disk or fails.
+//
+// Every HDF5 call and every write is checked: a failure throws OutputError naming the path, and
+// the file takes no more writes. Before each snapshot the room left (free space, and ulimit -f
+// less the file's size) is compared with what the snapshot needs, twice over, plus a reserve:
+// where it falls short the run stops before writing, with status "output_error", and the file
+// stays readable as of its last snapshot. A write that fails all the same (another process filled
+// the disk) may leave the part written since that snapshot unreadable.
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,6 +30,11 @@ struct SnapshotFields {
   std::vector<double> position, velocity;  // N x 3, unused axes zero
   std::vector<double> density, pressure, h, mass;
   std::vector<std::int32_t> phase;
+};
+
+// The run file or its directory cannot be written (exit 4, Run.hpp); the message names the path.
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 class RunFile {
@@ -50,9 +63,18 @@ class RunFile {
   const std::string& writingPath() const { return writing_; }  // <path>.partial until then
 
  private:
-  void writeXdmf(const std::string& xdmf, const std::string& h5) const;
+  // Runs a write; a failure marks the file broken (no more writes) and is rethrown.
+  template <class Write>
+  void guarded(Write&& write);
+  // Throws OutputError, after marking the file output_error, where less than `bytes` twice over
+  // plus a reserve is left to write.
+  void ensureRoom(double bytes);
+  double room(std::string& limit) const;  // bytes left to write; `limit` says which limit
+  // Marks the file broken and, where it still can, writes status "output_error" and `why`.
+  void markFailed(const std::string& why);
   std::string path_, writing_;
   std::int64_t file_ = -1;
+  bool broken_ = false;
   struct Entry {
     std::string group;
     double time;

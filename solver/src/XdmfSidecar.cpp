@@ -1,0 +1,76 @@
+#include "XdmfSidecar.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sph/RunFile.hpp"  // OutputError
+
+namespace sph {
+
+namespace {
+
+std::string text(const std::string& h5, const std::vector<XdmfSnapshot>& snapshots) {
+  const std::string file = std::filesystem::path(h5).filename().string();
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+    << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  auto item = [&](const XdmfSnapshot& e, const std::string& field, int cols, const char* type,
+                  int bytes) {
+    x << "      <DataItem Dimensions=\"" << e.n << (cols > 1 ? " 3" : "") << "\" NumberType=\""
+      << type << "\" Precision=\"" << bytes << "\" Format=\"HDF\">" << file << ":" << e.group << "/"
+      << field << "</DataItem>\n";
+  };
+  for (const XdmfSnapshot& e : snapshots) {
+    x << "   <Grid Name=\"" << e.group.substr(e.group.rfind('/') + 1)
+      << "\" GridType=\"Uniform\">\n"
+      << "    <Time Value=\"" << e.time << "\"/>\n"
+      << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.n
+      << "\" NodesPerElement=\"1\"/>\n    <Geometry GeometryType=\"XYZ\">\n";
+    item(e, "position", 3, "Float", 8);
+    x << "    </Geometry>\n";
+    x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";
+    item(e, "velocity", 3, "Float", 8);
+    x << "    </Attribute>\n";
+    for (const char* s : {"density", "pressure", "h", "mass"}) {
+      x << "    <Attribute Name=\"" << s << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+      item(e, s, 1, "Float", 8);
+      x << "    </Attribute>\n";
+    }
+    x << "    <Attribute Name=\"phase\" AttributeType=\"Scalar\" Center=\"Node\">\n";
+    item(e, "phase", 1, "Int", 4);
+    x << "    </Attribute>\n   </Grid>\n";
+  }
+  x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  return x.str();
+}
+
+}  // namespace
+
+void writeXdmf(const std::string& xdmf, const std::string& h5,
+               const std::vector<XdmfSnapshot>& snapshots) {
+  namespace fs = std::filesystem;
+  const fs::path tmp = fs::path(xdmf).concat(".tmp");
+  const std::string content = text(h5, snapshots);
+  errno = 0;
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  out.close();  // the last bytes reach the file here: a full disk shows now or never
+  if (!out) {
+    const std::string why = errno ? std::strerror(errno) : "the write failed";
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw OutputError(tmp.string() + ": cannot write the XDMF sidecar (" + why + ")");
+  }
+  std::error_code e;
+  fs::rename(tmp, xdmf, e);
+  if (e) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw OutputError(xdmf + ": cannot rename " + tmp.string() + " to it (" + e.message() + ")");
+  }
+}
+
+}  // namespace sph

@@ -1,0 +1,23 @@
+#pragma once
+// The XDMF 3 sidecar of a run file (RunFile.cpp): a temporal collection of polyvertex grids
+// pointing into the HDF5 file, which ParaView opens as a time series. Internal to the solver
+// library.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sph {
+
+struct XdmfSnapshot {
+  std::string group;  // /snapshots/<NNNNN>
+  double time;
+  std::size_t n;  // particles
+};
+
+// Writes `xdmf` naming the HDF5 file `h5` (by its file name: the two lie side by side), through
+// a temporary file renamed into place, so that a reader never sees half of it. Throws OutputError
+// naming the path where it cannot be written whole; the earlier `xdmf` then stays as it was.
+void writeXdmf(const std::string& xdmf, const std::string& h5,
+               const std::vector<XdmfSnapshot>& snapshots);
+
+}  // namespace sph
