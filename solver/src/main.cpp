@@ -8,6 +8,7 @@
 
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
+#include "sph/WaitPolicy.hpp"
 #include "sph/packing/PackingScene.hpp"
 #include "sph/packing/TankRun.hpp"
 
@@ -25,6 +26,7 @@ int reportError(const std::exception& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sph::chooseWaitPolicy(argv);  // first: it may execute the program again (WaitPolicy.hpp)
   CLI::App app{"sph: weakly compressible SPH (Lobovsky & Kren) with a V&V harness"};
   app.set_version_flag("--version",
                        std::string("sph ") + SPH_VERSION + " (" + SPH_GIT_COMMIT + ")");
