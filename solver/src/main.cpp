@@ -12,6 +12,7 @@
 #include "sph/Interrupt.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
+#include "sph/WaitPolicy.hpp"
 #include "sph/packing/PackingScene.hpp"
 #include "sph/packing/TankRun.hpp"
 
@@ -52,6 +53,7 @@ void addLimits(CLI::App* command, sph::RunLimits& limits, std::uint64_t& maxMemo
 }  // namespace
 
 int main(int argc, char** argv) {
+  sph::chooseWaitPolicy(argv);  // first: it may execute the program again (WaitPolicy.hpp)
   CLI::App app{"sph: weakly compressible SPH (Lobovsky & Kren) with a V&V harness"};
   app.set_version_flag("--version",
                        std::string("sph ") + SPH_VERSION + " (" + SPH_GIT_COMMIT + ")");
