@@ -185,9 +185,10 @@ int run(const Scene& scene, const RunOptions& opt) {
     }
     if (progress && stepEnd - lastPrint > std::chrono::milliseconds(500)) {
       lastPrint = stepEnd;
-      std::fprintf(stderr, "\r  t = %.4g / %.4g s   step %ld   %.0f steps/s   ETA %.0f s   ",
+      const double eta = remaining.seconds();  // tenths below 10 s, where whole seconds mislead
+      std::fprintf(stderr, "\r  t = %.4g / %.4g s   step %ld   %.0f steps/s   ETA %.*f s   ",
                    sim.time(), scene.endTime, sim.step(), remaining.stepsPerSecond(),
-                   std::ceil(remaining.seconds()));
+                   eta < 10 ? 1 : 0, eta);
     }
   }
   if (progress) std::fprintf(stderr, "\n");
