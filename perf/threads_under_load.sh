@@ -7,7 +7,10 @@
 # ratios, writes it with every run's figures to OUT/threads_under_load.{md,csv}.
 #
 #   perf/threads_under_load.sh [--sph PATH] [--out DIR] [--repeats N] [--scenes a.toml,b.toml]
-#                              [--loads idle,one,both] [--env NAME=VALUE]...
+#                              [--loads idle,one,both] [--env NAME=VALUE]... [--wait-quiet]
+#
+# --wait-quiet: before each run, wait (10 min at most) for a second in which work other than the
+# busy loops took less than 0.05 cores: on a machine shared with other people's builds.
 #
 # The wait policy is the program's own unless --env sets one (OMP_WAIT_POLICY, GOMP_SPINCOUNT are
 # removed from the environment otherwise): the benchmark measures what a user gets.
@@ -15,10 +18,11 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 sph="$root/build/release/solver/sph"
 out="$root/build/release/perf-results"
-repeats=3
+repeats=5
 scenes="$root/validation/scenes/dam_break.toml,$root/validation/scenes/dam_break_dx0.005.toml"
 loads="idle,one,both"
 extra_env=()
+wait_quiet=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --sph) sph="$2"; shift 2 ;;
@@ -27,6 +31,7 @@ while [ $# -gt 0 ]; do
     --scenes) scenes="$2"; shift 2 ;;
     --loads) loads="$2"; shift 2 ;;
     --env) extra_env+=("$2"); shift 2 ;;
+    --wait-quiet) wait_quiet=1; shift ;;
     *) echo "threads_under_load.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -65,6 +70,15 @@ loop_jiffies() {  # the busy loops' CPU time so far
     sum=$((sum + $(awk '{print $14 + $15}' "/proc/$pid/stat")))
   done
   echo "$sum"
+}
+
+wait_for_quiet() {
+  local deadline=$((SECONDS + 600)) b0 l0
+  while [ "$SECONDS" -lt "$deadline" ]; do
+    b0=$(busy_jiffies) l0=$(loop_jiffies)
+    sleep 1
+    [ $(($(busy_jiffies) - b0 - $(loop_jiffies) + l0)) -lt 5 ] && return 0
+  done
 }
 
 # scene threads -> "wall_s share_on_2 other_cores": other_cores, the cores that work other than
@@ -108,6 +122,7 @@ for load in "${load_list[@]}"; do
       order="1 2"
       [ $((r % 2)) -eq 0 ] && order="2 1"
       for t in $order; do
+        [ "$wait_quiet" = 1 ] && wait_for_quiet
         result=$(run_once "$scene" "$t")
         read -r wall share others <<<"$result"
         echo "$load,$(basename "$scene" .toml),$r,$t,$wall,$share,$others" >>"$csv"
