@@ -19,6 +19,7 @@ double median(std::vector<double> v) {
 ThreadTuner::ThreadTuner(int maxThreads, bool fixed, Settings settings)
     : max_(std::max(1, maxThreads)), s_(settings) {
   s_.window = std::max(1, s_.window);
+  s_.longestWindow = std::max(s_.window, s_.longestWindow);
   s_.rounds = std::max(1, s_.rounds);
   s_.shortestGap = std::max(0.0, s_.shortestGap);
   s_.longestGap = std::max(s_.shortestGap, s_.longestGap);
@@ -51,7 +52,7 @@ bool ThreadTuner::add(Window& w, double seconds) const {
   if (w.seen++ > 0) w.steps += 1, w.seconds += seconds;  // the first step settles the threads
   // Steps so slow that fewer than `window` of them fill three windows' time end the window
   // early: a count that slow needs no more of them to show it, and each costs the run.
-  if (w.steps >= s_.window) return w.seconds >= s_.windowSeconds;
+  if (w.steps >= s_.window) return w.seconds >= s_.windowSeconds || w.steps >= s_.longestWindow;
   return s_.windowSeconds > 0 && w.steps >= 1 && w.seconds >= 3 * s_.windowSeconds;
 }
 

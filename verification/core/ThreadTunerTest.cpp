@@ -102,6 +102,19 @@ TEST(ThreadTuner, AWindowLastsAtLeastItsSeconds) {
   EXPECT_EQ(used[10], 1);  // a tie goes to one thread
 }
 
+TEST(ThreadTuner, AWindowEndsAtItsLongest) {
+  // Steps of 1 ms against windows of 1 s: 64 counted steps end the window (a small scene's run
+  // may be shorter than a trial of 1 s windows).
+  Settings s = steps(4, 1, 100, 100);
+  s.windowSeconds = 1.0;
+  sph::ThreadTuner tuner(2, false, s);
+  const auto used = counts(tuner, 131, [](int, int) { return 1e-3; });
+  EXPECT_EQ(used[64], 2);
+  EXPECT_EQ(used[65], 1);
+  EXPECT_EQ(used[129], 1);
+  EXPECT_EQ(tuner.trials(), 1);  // after 65 + 65 steps
+}
+
 TEST(ThreadTuner, FirstStepOfAWindowIsNotCounted) {
   // All threads faster, but the first step on them (waking the threads) is slow.
   sph::ThreadTuner tuner(2, false, steps(4, 1, 100, 100));

@@ -11,10 +11,12 @@
 // steps and `windowSeconds` long, after one step to settle that is not counted: a few scheduler
 // slices, so that a process that takes a core for a slice is seen by both counts alike; steps so
 // slow that fewer than `window` of them take 3 windowSeconds end it early (they cost the run, and
-// a count that slow needs no more to show it). A round's ratio of the two times per step is the
-// machine's answer for that moment. Two rounds that both favour one count by `clearly` decide;
-// else the median of `rounds` rounds does (a burst of other work in one window decides nothing),
-// and a tie goes to one thread, which leaves the other core to whoever wants it.
+// a count that slow needs no more to show it), and `longestWindow` steps end it whatever their
+// time (a scene smaller than the dam break, whose whole run may be shorter than a trial). A round's
+// ratio of the two times per step is the machine's answer for that moment. Two rounds that both
+// favour one count by `clearly` decide; else the median of `rounds` rounds does (a burst of other
+// work in one window decides nothing), and a tie goes to one thread, which leaves the other core to
+// whoever wants it.
 //
 // The chosen count then runs for `gap` times the trial's wall time (so at most 1/gap of a run is
 // spent on trials): the gap doubles from shortestGap to longestGap while the choice holds, and
@@ -30,6 +32,7 @@ namespace sph {
 struct ThreadTrials {
   int window = 4;
   double windowSeconds = 0.01;
+  int longestWindow = 64;  // steps
   int rounds = 3;
   double clearly = 1.25;
   double shortestGap = 8, longestGap = 64;  // in trial wall times
