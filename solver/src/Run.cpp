@@ -17,6 +17,7 @@
 #include "sph/EnergyBudget.hpp"
 #include "sph/InitialParticles.hpp"
 #include "sph/Interrupt.hpp"
+#include "sph/RemainingTime.hpp"
 #include "sph/RunFile.hpp"
 #include "sph/Simulation.hpp"
 #include "sph/ThreadTuner.hpp"
@@ -171,7 +172,11 @@ int run(const Scene& scene, const RunOptions& opt) {
   double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
   const bool progress = opt.progress && isatty(STDERR_FILENO);
   auto lastPrint = clock::now();
-  const long step0 = sim.step();
+  auto since = [&](clock::time_point a, clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  RemainingTime remaining(scene.endTime);
+  remaining.observe(since(start, lastPrint), sim.time(), sim.step());
   const int maxThreads = omp_get_max_threads();
   ThreadTuner tuner(maxThreads, opt.fixedThreads);
   std::optional<Failure> failure;
@@ -181,21 +186,22 @@ int run(const Scene& scene, const RunOptions& opt) {
     omp_set_num_threads(tuner.threads());
     const auto stepStart = clock::now();
     failure = sim.advance(std::min(nextSnapshot, scene.endTime) - sim.time());
-    tuner.took(std::chrono::duration<double>(clock::now() - stepStart).count());
+    const auto stepEnd = clock::now();
+    tuner.took(since(stepStart, stepEnd));
     if (failure) break;
+    remaining.observe(since(start, stepEnd), sim.time(), sim.step());
     const bool atSnapshot = sim.time() >= nextSnapshot * (1 - 1e-12);
     if (atSnapshot || sim.step() % scene.seriesEvery == 0) record();
     if (atSnapshot) {
       snapshot(false);
       nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
     }
-    if (progress && clock::now() - lastPrint > std::chrono::milliseconds(500)) {
-      lastPrint = clock::now();
-      const double wall = std::chrono::duration<double>(lastPrint - start).count();
-      const double rate = (sim.step() - step0) / wall;
-      const double eta = wall * (scene.endTime - sim.time()) / std::max(sim.time(), 1e-30);
-      std::fprintf(stderr, "\r  t = %.4g / %.4g s   step %ld   %.0f steps/s   ETA %.0f s   ",
-                   sim.time(), scene.endTime, sim.step(), rate, eta);
+    if (progress && stepEnd - lastPrint > std::chrono::milliseconds(500)) {
+      lastPrint = stepEnd;
+      const double eta = remaining.seconds();  // tenths below 10 s, where whole seconds mislead
+      std::fprintf(stderr, "\r  t = %.4g / %.4g s   step %ld   %.0f steps/s   ETA %.*f s   ",
+                   sim.time(), scene.endTime, sim.step(), remaining.stepsPerSecond(),
+                   eta < 10 ? 1 : 0, eta);
     }
   }
   if (progress) std::fprintf(stderr, "\n");
