@@ -1,4 +1,5 @@
-# cmake -DBUILD_DIR=... -DDOWNSTREAM=... -DWORK=... -DSCENE=... -DGENERATOR=... -DCXX=... -P this
+# cmake -DBUILD_DIR=... -DDOWNSTREAM=... -DWORK=... -DSCENE=... -DGENERATOR=... -DCXX=...
+#       [-DCXX_FLAGS=...] -P this
 # Installs BUILD_DIR into WORK/prefix, checks the installed files, configures and builds the
 # program in DOWNSTREAM against that prefix alone and runs it on SCENE (the dam break).
 cmake_minimum_required(VERSION 3.25)
@@ -29,7 +30,8 @@ endif()
 
 # Only the fresh prefix: the build tree is not a package anyone could find.
 step("configuring ${DOWNSTREAM}" ${CMAKE_COMMAND} -S ${DOWNSTREAM} -B ${WORK}/build
-  -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_PREFIX_PATH=${prefix}
+  -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX} "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}"
+  -DCMAKE_PREFIX_PATH=${prefix}
   -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
 file(STRINGS ${WORK}/build/CMakeCache.txt found REGEX "^sph_DIR:")
 if(NOT found STREQUAL "sph_DIR:PATH=${prefix}/lib/cmake/sph")
