@@ -32,7 +32,7 @@ template <int D>
 void FixedWalls<D>::append(InteractionSet<D>& set) const {
   const std::size_t base = set.haloEnd();
   const std::int64_t nWall = static_cast<std::int64_t>(x_.size());
-  const double reach = 2.0 * h_;  // lambda h, lambda = 2 for every kernel here
+  const double reach = 2.0 * h_, reach2 = reach * reach;  // lambda h, lambda = 2 for every kernel
   // The fluid and its periodic images into cells of side `reach`: a wall particle's neighbours
   // lie in the cells around its own.
   cells_.build(
@@ -50,9 +50,9 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
         for (int k = begin; k < end; ++k) {
           const int f = order[k];
           const Vec<D> r_wf = xw - set.x[f];
-          const double r = r_wf.norm();
-          if (r >= reach) continue;
-          const double W_wf = kernelValue<D>(kernel_, r, h_);
+          const double r2 = r_wf.squaredNorm();
+          if (r2 >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
+          const double W_wf = kernelValue<D>(kernel_, std::sqrt(r2), h_);
           sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
           if (moving) sumVW += W_wf * set.v[f];
         }
