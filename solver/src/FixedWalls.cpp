@@ -40,41 +40,47 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
   const auto& order = cells_.order();
   set.resize(base + static_cast<std::size_t>(nWall));
   const bool moving = !velocity_.empty(), ownVolumes = !volume_.empty();
+  // The kernel chosen once, outside the loops (kernelValue would switch on it at every pair).
+  withKernel(kernel_, [&](auto kernel) {
+    using Kernel = decltype(kernel);
 #pragma omp parallel for schedule(static) if (nWall >= parallelFrom())
-  for (std::int64_t w = 0; w < nWall; ++w) {
-    const Vec<D>& xw = x_[w];
-    double sumW = 0, sumPW = 0;
-    Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
-    if (const std::int64_t c = cells_.cellOf(xw); c >= 0)
-      cells_.forEachAdjacentRange(c, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-          const int f = order[k];
-          const Vec<D> r_wf = xw - set.x[f];
-          const double r2 = r_wf.squaredNorm();
-          if (r2 >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
-          const double W_wf = kernelValue<D>(kernel_, std::sqrt(r2), h_);
-          sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
-          if (moving) sumVW += W_wf * set.v[f];
+    for (std::int64_t w = 0; w < nWall; ++w) {
+      const Vec<D>& xw = x_[w];
+      double sumW = 0, sumPW = 0;
+      Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
+      if (const std::int64_t c = cells_.cellOf(xw); c >= 0)
+        cells_.forEachAdjacentRange(c, [&](int begin, int end) {
+          for (int k = begin; k < end; ++k) {
+            const int f = order[k];
+            const Vec<D> r_wf = xw - set.x[f];
+            const double r2 = r_wf.squaredNorm();
+            if (r2 >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
+            const double W_wf = Kernel::template W<D>(std::sqrt(r2), h_);
+            sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
+            if (moving) sumVW += W_wf * set.v[f];
+          }
+        });
+      // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
+      // Not below p0: see the header.
+      const double p =
+          sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
+      // p0 gives rho0 exactly ((p0 - p0) / K + 1 = 1): no root to take.
+      const double rho = p == phase_.p0 ? phase_.rho0 : TaitEquationOfState::density(p, phase_);
+      Vec<D> v = Vec<D>::Zero();
+      if (moving) {
+        const WallVelocityRule<D>& rule = velocity_[w];
+        if (!rule.atRest) {
+          const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
+          for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
+            v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
         }
-      });
-    // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
-    // Not below p0: see the header.
-    const double p = sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
-    const double rho = TaitEquationOfState::density(p, phase_);
-    Vec<D> v = Vec<D>::Zero();
-    if (moving) {
-      const WallVelocityRule<D>& rule = velocity_[w];
-      if (!rule.atRest) {
-        const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
-        for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
-          v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
       }
+      const std::size_t e = base + static_cast<std::size_t>(w);
+      set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
+      set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
+      set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;
     }
-    const std::size_t e = base + static_cast<std::size_t>(w);
-    set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
-    set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
-    set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;
-  }
+  });
 }
 
 template class FixedWalls<1>;
