@@ -2,51 +2,89 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+
+#include "sph/Parallel.hpp"
 
 namespace sph {
 
-FixedWalls::FixedWalls(std::vector<Vec<2>> position, double V0, double h, KernelKind kernel,
-                       const Phase& phase, const Vec<2>& g)
+template <int D>
+FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, double V0, double h, KernelKind kernel,
+                          const Phase& phase, const Vec<D>& g)
     : x_(std::move(position)), V0_(V0), h_(h), kernel_(kernel), phase_(phase), g_(g) {}
 
-void FixedWalls::append(InteractionSet<2>& set) const {
-  const int nFluid = static_cast<int>(set.nFluid);
-  const int nWall = static_cast<int>(x_.size());
-  const double reach = 2.0 * h_;  // lambda h, lambda = 2 for every kernel here
-  // Fluid entries into cells of side `reach`: a wall particle's neighbours lie in the cells
-  // around its own.
-  cells_.build(
-      nFluid, [&](std::size_t f, int a) { return set.x[f][a]; }, reach);
-  const auto& order = cells_.order();
-
-  p_.resize(nWall), rho_.resize(nWall);
-#pragma omp parallel for schedule(static)
-  for (int w = 0; w < nWall; ++w) {
-    const Vec<2>& xw = x_[w];
-    double sumW = 0, sumPW = 0;
-    Vec<2> sumRhoRW = Vec<2>::Zero();
-    if (const std::int64_t c = cells_.cellOf(xw); c >= 0)
-      cells_.forEachAdjacentRange(c, [&](int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-          const int f = order[k];
-          const Vec<2> r_wf = xw - set.x[f];
-          const double r = r_wf.norm();
-          if (r >= reach) continue;
-          const double W_wf = kernelValue<2>(kernel_, r, h_);
-          sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
-        }
-      });
-    // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
-    // Not below p0: see the header.
-    const double p = sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
-    p_[w] = p;
-    rho_[w] = TaitEquationOfState::density(p, phase_);
-  }
-  for (int w = 0; w < nWall; ++w) {
-    set.x.push_back(x_[w]), set.v.push_back(Vec<2>::Zero());
-    set.rho.push_back(rho_[w]), set.p.push_back(p_[w]), set.m.push_back(rho_[w] * V0_);
-    set.h.push_back(h_), set.mu.push_back(phase_.mu), set.source.push_back(-1);
-  }
+template <int D>
+FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, std::vector<WallVelocityRule<D>> velocity,
+                          std::vector<double> volume, double h, KernelKind kernel,
+                          const Phase& phase, const Vec<D>& g)
+    : x_(std::move(position)),
+      velocity_(std::move(velocity)),
+      volume_(std::move(volume)),
+      h_(h),
+      kernel_(kernel),
+      phase_(phase),
+      g_(g) {
+  if (velocity_.size() != x_.size() || volume_.size() != x_.size())
+    throw std::logic_error("FixedWalls: one velocity rule and one volume per wall particle");
 }
+
+template <int D>
+void FixedWalls<D>::append(InteractionSet<D>& set) const {
+  const std::size_t base = set.haloEnd();
+  const std::int64_t nWall = static_cast<std::int64_t>(x_.size());
+  const double reach = 2.0 * h_, reach2 = reach * reach;  // lambda h, lambda = 2 for every kernel
+  // The fluid and its periodic images into cells of side `reach`: a wall particle's neighbours
+  // lie in the cells around its own.
+  cells_.build(
+      base, [&](std::size_t f, int a) { return set.x[f][a]; }, reach);
+  const auto& order = cells_.order();
+  set.resize(base + static_cast<std::size_t>(nWall));
+  const bool moving = !velocity_.empty(), ownVolumes = !volume_.empty();
+  // The kernel chosen once, outside the loops (kernelValue would switch on it at every pair).
+  withKernel(kernel_, [&](auto kernel) {
+    using Kernel = decltype(kernel);
+#pragma omp parallel for schedule(static) if (nWall >= parallelFrom())
+    for (std::int64_t w = 0; w < nWall; ++w) {
+      const Vec<D>& xw = x_[w];
+      double sumW = 0, sumPW = 0;
+      Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
+      if (const std::int64_t c = cells_.cellOf(xw); c >= 0)
+        cells_.forEachAdjacentRange(c, [&](int begin, int end) {
+          for (int k = begin; k < end; ++k) {
+            const int f = order[k];
+            const Vec<D> r_wf = xw - set.x[f];
+            const double r2 = r_wf.squaredNorm();
+            if (r2 >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
+            const double W_wf = Kernel::template W<D>(std::sqrt(r2), h_);
+            sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
+            if (moving) sumVW += W_wf * set.v[f];
+          }
+        });
+      // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
+      // Not below p0: see the header.
+      const double p =
+          sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
+      // p0 gives rho0 exactly ((p0 - p0) / K + 1 = 1): no root to take.
+      const double rho = p == phase_.p0 ? phase_.rho0 : TaitEquationOfState::density(p, phase_);
+      Vec<D> v = Vec<D>::Zero();
+      if (moving) {
+        const WallVelocityRule<D>& rule = velocity_[w];
+        if (!rule.atRest) {
+          const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
+          for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
+            v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
+        }
+      }
+      const std::size_t e = base + static_cast<std::size_t>(w);
+      set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
+      set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
+      set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;
+    }
+  });
+}
+
+template class FixedWalls<1>;
+template class FixedWalls<2>;
+template class FixedWalls<3>;
 
 }  // namespace sph

@@ -142,6 +142,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("rho0", scene.phases[0].rho0);
   file.attribute("kernel", std::string(name(scene.kernel)));
   file.attribute("terms", join(sim.termNames()));
+  file.attribute("boundary_model", std::string(sim.boundary().name()));
   file.attribute("status", std::string("running"));
   file.text("/scene", scene.text);
   for (const PackedBlock& b : packed) writePacking(file, scene, b);

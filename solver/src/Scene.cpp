@@ -11,6 +11,7 @@
 #include <string>
 
 #include "SceneTable.hpp"
+#include "SceneWalls.hpp"
 
 namespace sph {
 
@@ -403,7 +404,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.text = text;
   SceneTable top(root, "", s.file);
   top.allow({"name", "description", "dimension", "domain", "phase", "fluid", "physics", "numerics",
-             "output", "probe"});
+             "output", "probe", "walls", "obstacle"});
   s.name = top.name("name");
   top.string("description", "");
   const double dimension = top.number("dimension");  // 2.5 must not pass as 2
@@ -468,6 +469,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   for (int a = 0; a < D; ++a)
     if (s.dx > 0.5 * (s.upper[a] - s.lower[a])) numerics.fail("dx", "larger than half the domain");
   checkBlocksHoldParticles(s);
+  readWalls(top.sub("walls"), top.array("obstacle"), top.sub("domain"), s);
 
   SceneTable output = top.sub("output");
   output.allow({"snapshot_interval", "series_every"});

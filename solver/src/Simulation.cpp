@@ -61,6 +61,7 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
               {.beta = scene.beta,
                .diffusionDelta = scene.diffusionDelta,
                .soundSpeed = scene.phases.empty() ? 0.0 : scene.phases[0].c0}),
+      boundary_(makeBoundary<D>(scene, bounds_)),
       y_(std::move(initial)),
       skinFraction_(scene.neighbourSkin) {
   id_.resize(y_.size());
@@ -75,9 +76,8 @@ std::vector<std::string> Simulation<D>::termNames() const {
   double g = 0;
   for (double c : scene_.bodyAcceleration) g += std::abs(c);
   if (g > 0) names.push_back("body_force");
-  if (bounds_.anyWall()) names.push_back("ghost_walls");
+  boundary_->listTerms(names);
   if (bounds_.anyPeriodic()) names.push_back("periodic");
-  if (halo_) names.push_back(haloName_);
   if (source_) names.push_back("source");
   return names;
 }
@@ -123,9 +123,9 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   const std::int64_t n = static_cast<std::int64_t>(state.size());
   // The lists of the last build serve while no particle has moved, and no h grown, enough to
   // bring a pair that was not listed inside the support (2 d + 2 dh below the skin:
-  // ForceEvaluation.hpp). A custom halo may change its members at any evaluation: lists are then
-  // built every time.
-  const bool skinned = skinFraction_ > 0 && !halo_;
+  // ForceEvaluation.hpp). A boundary's entries after the halo (fixed wall particles) stand still,
+  // in the same places of the set while the halo's members are the same.
+  const bool skinned = skinFraction_ > 0;
   const bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n;
   const double hMax = motion.hMax;
   const bool reuse = kept && 2.0 * std::sqrt(motion.moved2) + 2.0 * motion.grown < skin_;
@@ -139,11 +139,9 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   }
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
-  const Vec<D> ghostGravity = scene_.hydrostaticGhosts ? g : Vec<D>::Zero();
   // Ghosts within the support plus the skin: those the kept lists may need.
-  buildInteractionSet(state, scene_.phases, bounds_, 2.0 * hMax + skin_, ghostGravity, set_,
-                      reuse ? HaloMembers::same : HaloMembers::rescan);
-  if (halo_) halo_(state, set_);
+  boundary_->build(state, scene_.phases, 2.0 * hMax + skin_,
+                   reuse ? HaloMembers::same : HaloMembers::rescan, set_);
   forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
@@ -325,6 +323,13 @@ template <int D>
 std::optional<Failure> Simulation<D>::failureFrom(const Particles<D>& s, std::int64_t first,
                                                   double t, long step) const {
   if (first < static_cast<std::int64_t>(s.size())) return checkParticle(s, first, t, step);
+  if (boundary_->hasInnerSolids())
+    if (const SolidCrossing c = boundary_->firstInside(s); c.particle >= 0) {
+      std::ostringstream m;
+      m << "step " << step << ", t = " << t << " s, particle " << id_[c.particle] << ": " << c.depth
+        << " m inside " << c.solid << " (crossed its wall)";
+      return Failure{FailureCause::wall_penetration, step, t, id_[c.particle], m.str()};
+    }
   if (check_) return check_(s, t, step);
   return std::nullopt;
 }
@@ -415,7 +420,7 @@ struct Simulation<D>::Stepper {
     const double *rhoS = ys.rho.data(), *hS = ys.h.data();
     double* pS = ys.p.data();
     const int* phaseS = ys.phase.data();
-    const bool ownReflection = static_cast<bool>(sim.reflection_);
+    const bool ownReflection = sim.reflectsItself();
     const Plausible<D> plausible(sim.scene_, sim.bounds_);
     const Phase* phases = sim.scene_.phases.data();
     const BoxFaces<D> faces = box;
@@ -451,7 +456,12 @@ struct Simulation<D>::Stepper {
     sim.reflections_ += reflected, sim.reflectionDepth_ = deepest;
     motion.hMax = hMax, motion.moved2 = moved2, motion.grown = grown;
     if (ownReflection) {
-      sim.reflection_(ys);
+      if (sim.boundary_->hasInnerSolids()) {
+        long put = 0;
+        sim.boundary_->putBack(ys, faces.tolerated, put, sim.reflectionDepth_);
+        sim.reflections_ += put;
+      }
+      if (sim.reflection_) sim.reflection_(ys);
       failure = sim.check(ys, t, step);
     } else {
       failure = sim.failureFrom(ys, first, t, step);
@@ -480,7 +490,7 @@ std::optional<Failure> Simulation<D>::advance(double dtMax) {
   const double dt = std::min(dtStable, dtMax);
   Stepper step(*this, dt);
   if (!Integrator::advance(step, dt)) return step.failure;
-  const bool ownReflection = static_cast<bool>(reflection_);
+  const bool ownReflection = reflectsItself();
   const Motion motion = step.motion;
   std::swap(y_, yStar_);
   t_ += dt, dt_ = dt, limit_ = limit;

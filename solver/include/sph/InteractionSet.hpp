@@ -1,7 +1,8 @@
 #pragma once
 // Everything a fluid particle interacts with: the fluid particles themselves (first nFluid
-// entries), then their periodic images and ghost-wall mirrors (the halo). Rebuilt before every
-// force evaluation from the current fluid state.
+// entries), then their periodic images and ghost-wall mirrors (the halo), then any fixed wall
+// particles (FixedWalls.hpp). Rebuilt before every force evaluation from the current fluid state
+// by the scene's boundary (boundaries/Boundary.hpp).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -36,6 +37,12 @@ struct InteractionSet {
   std::array<std::vector<std::int64_t>, D> halo;
 
   std::size_t size() const { return x.size(); }
+  // Where the fluid and its halo end: entries appended after them (fixed wall particles) begin.
+  std::size_t haloEnd() const {
+    std::size_t n = nFluid;
+    for (const auto& h : halo) n += h.size();
+    return n;
+  }
   void clear() { resize(0); }
   void resize(std::size_t n) {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);

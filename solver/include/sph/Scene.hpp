@@ -56,6 +56,18 @@ struct Probe {
   double scaleLength = 0.0, scaleHeight = 0.0;
 };
 
+// What the box's wall faces are made of (solver/SCENES.md, [walls]): the paper's mirror ghosts
+// (boundaries/MirrorGhosts.hpp) or layers of fixed wall particles with Adami et al.'s (2012)
+// pressure extrapolation (boundaries/WallParticles.hpp).
+enum class WallModel { mirror_ghosts, wall_particles };
+std::string_view name(WallModel);
+
+// A solid box inside the domain made of fixed wall particles ([[obstacle]]).
+struct Obstacle {
+  std::vector<double> lower, upper;
+  FaceKind wall = FaceKind::free_slip;  // free_slip or no_slip
+};
+
 struct Scene {
   std::string name, file, text;
   int dimension = 2;
@@ -64,6 +76,10 @@ struct Scene {
   std::array<std::array<std::vector<double>, 2>, 3> wallVelocity{};
   bool hydrostaticGhosts =
       false;  // ghost pressure: the source's (paper) or hydrostatically corrected
+  WallModel wallModel = WallModel::mirror_ghosts;
+  int wallLayers =
+      0;  // layers of wall particles (set by the reader: [walls] layers or its default)
+  std::vector<Obstacle> obstacles;
   std::vector<Phase> phases;
   std::vector<FluidBlock> fluids;
   std::vector<double> bodyAcceleration;  // gravity plus any driving force, F/rho [m/s^2]

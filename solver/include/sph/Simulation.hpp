@@ -2,6 +2,7 @@
 // The time loop of one scene: ghosts and neighbours, the enabled terms, the body force, and the
 // time integrator's step (integrators/) with the Morris et al. (1997) time-step limits.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -9,6 +10,7 @@
 #include "sph/InteractionSet.hpp"
 #include "sph/Particles.hpp"
 #include "sph/Scene.hpp"
+#include "sph/boundaries/Boundary.hpp"
 #include "sph/integrators/PredictorCorrector.hpp"
 
 namespace sph {
@@ -42,11 +44,10 @@ class Simulation {
   // Extra rates added after the SPH terms, e.g. the sources of a manufactured solution.
   using Source = std::function<void(double t, const Particles<D>&, Derivatives<D>&)>;
   void setSource(Source s) { source_ = std::move(s); }
-  // Entries appended to the interaction set after the fluid and its halo, before every force
-  // evaluation (e.g. fixed wall particles whose state follows the fluid); `name` is listed
-  // among the terms.
-  using Halo = std::function<void(const Particles<D>&, InteractionSet<D>&)>;
-  void setHalo(std::string name, Halo h) { haloName_ = std::move(name), halo_ = std::move(h); }
+  // The boundary model that builds the interaction set (boundaries/Boundary.hpp): the scene's
+  // ([walls], [[obstacle]]) by default; e.g. the packing tanks' fixed wall particles.
+  void setBoundary(std::unique_ptr<Boundary<D>> b) { boundary_ = std::move(b); }
+  const Boundary<D>& boundary() const { return *boundary_; }
   // A further check of every new state (e.g. wall penetration against a curved wall), run after
   // the built-in ones; a failure stops the step as those do.
   using Check = std::function<std::optional<Failure>(const Particles<D>&, double t, long step)>;
@@ -88,7 +89,8 @@ class Simulation {
   TimeStepLimit lastLimit() const { return limit_; }
   long forceEvaluations() const { return evaluations_; }
   long reusedNeighbourLists() const { return reusedLists_; }  // evaluations that kept them
-  // Particles that ended a step less than dx/2 beyond a wall and were reflected back (position
+  // Particles that ended a step less than dx/2 beyond a wall (or inside an obstacle) and were
+  // reflected back (position
   // mirrored, normal velocity reversed). The mirror ghosts of the paper give a finite, not a
   // growing, repulsion as a particle nears its own ghost, so a thin free-surface layer on a wall
   // (the dam-break toe) can creep through it; deeper crossings are wall_penetration failures.
@@ -111,6 +113,9 @@ class Simulation {
   std::optional<Failure> checkParticle(const Particles<D>& s, std::size_t i, double t,
                                        long step) const;
   void storeInCellOrder();
+  // Whether particles are put back after the step's pass (a custom reflection, an obstacle's):
+  // the checks and the lists' motion then wait for it.
+  bool reflectsItself() const { return reflection_ || boundary_->hasInnerSolids(); }
   // How far the particles moved, and h grew, since the neighbour lists were built (if `listed`),
   // and the largest h: whether rates() keeps the lists. Gathered in the loop that wrote the state.
   struct Motion {
@@ -127,8 +132,7 @@ class Simulation {
   Boundaries<D> bounds_;
   ForceEvaluation<D> forces_;
   Source source_;
-  Halo halo_;
-  std::string haloName_;
+  std::unique_ptr<Boundary<D>> boundary_;
   Check check_;
   Reflection reflection_;
   Particles<D> y_, yStar_;

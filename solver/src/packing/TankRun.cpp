@@ -97,8 +97,8 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
   }
 
   Scene run = runScene(scene, options, lo, hi);
-  walls_ = std::make_shared<FixedWalls>(std::move(wall), V0_, h, scene.parameters.kernel,
-                                        run.phases[0], Vec2(0.0, -scene.gravity));
+  walls_ = std::make_shared<FixedWalls<2>>(std::move(wall), V0_, h, scene.parameters.kernel,
+                                           run.phases[0], Vec2(0.0, -scene.gravity));
 
   const HydrostaticFields hs = hydrostatic(fluid, V0_, scene.phase, scene.gravity, scene.surface);
   Particles<2> y;
@@ -111,9 +111,12 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
   }
   sim_ = std::make_unique<Simulation<2>>(run, std::move(y));
 
-  std::shared_ptr<FixedWalls> walls = walls_;
-  sim_->setHalo("fixed_walls_adami2012",
-                [walls](const Particles<2>&, InteractionSet<2>& set) { walls->append(set); });
+  // The container's walls are its wall particles (the box's faces are all open: no halo).
+  Boundaries<2> open;
+  open.lower = Vec2(run.lower[0], run.lower[1]), open.upper = Vec2(run.upper[0], run.upper[1]);
+  sim_->setBoundary(std::make_unique<WallParticles<2>>(
+      open, Vec2::Zero(), walls_, std::vector<SolidBox<2>>{}, "fixed_walls",
+      std::vector<std::string>{"fixed_walls_adami2012"}));
   // Section 3.1.1: dv/dt += -zeta v while t < t_damp, zeta = (zeta H / c0) c0 / H.
   if (options.dampingZeta > 0 && options.dampingTime > 0) {
     const double zeta = options.dampingZeta * scene.phase.c0 / H_;

@@ -17,6 +17,7 @@
 #include <optional>
 
 #include "sph/FixedWalls.hpp"
+#include "sph/boundaries/WallParticles.hpp"
 #include "sph/Simulation.hpp"
 #include "sph/packing/PackingScene.hpp"
 
@@ -75,7 +76,7 @@ class TankRun {
   TankSample sample() const;
   Simulation<2>& simulation() { return *sim_; }
   const Simulation<2>& simulation() const { return *sim_; }
-  const FixedWalls& walls() const { return *walls_; }
+  const FixedWalls<2>& walls() const { return *walls_; }
   const Region& region() const { return region_; }  // the fluid at the start
   double H() const { return H_; }                   // filling height: surface minus lowest point
   double V0() const { return V0_; }
@@ -95,7 +96,7 @@ class TankRun {
   Region region_, container_;
   double H_ = 0.0, V0_ = 0.0, volume_ = 0.0, timeScale_ = 0.0;
   int packingIterations_ = 0;
-  std::shared_ptr<FixedWalls> walls_;
+  std::shared_ptr<FixedWalls<2>> walls_;
   struct Reflections {
     long count = 0;
     double deepest = 0.0;

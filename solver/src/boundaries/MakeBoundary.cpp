@@ -1,0 +1,56 @@
+#include <memory>
+
+#include "sph/Scene.hpp"
+#include "sph/boundaries/Boundary.hpp"
+#include "sph/boundaries/MirrorGhosts.hpp"
+#include "sph/boundaries/WallParticles.hpp"
+
+namespace sph {
+
+template <int D>
+std::unique_ptr<Boundary<D>> makeBoundary(const Scene& s, const Boundaries<D>& bounds) {
+  Vec<D> g;
+  for (int a = 0; a < D; ++a) g[a] = s.bodyAcceleration[a];
+  const Vec<D> ghostGravity = s.hydrostaticGhosts ? g : Vec<D>::Zero();
+  const bool particles = s.wallModel == WallModel::wall_particles;
+  if (!particles && s.obstacles.empty())
+    return std::make_unique<MirrorGhosts<D>>(bounds, ghostGravity);
+  WallLattice<D> lattice;
+  std::vector<std::string> terms;
+  Boundaries<D> halo = bounds;  // the faces still imaged or mirrored
+  if (particles) {
+    layBoxWalls(bounds, s.dx, s.wallLayers, lattice);
+    for (auto& axis : halo.face)
+      for (FaceKind& k : axis)
+        if (Boundaries<D>::isWall(k)) k = FaceKind::open;
+    if (bounds.anyWall()) terms.push_back("wall_particles_adami2012");
+  } else if (bounds.anyWall()) {
+    terms.push_back("ghost_walls");
+  }
+  std::vector<SolidBox<D>> solids;
+  for (const Obstacle& o : s.obstacles) {
+    SolidBox<D> box;
+    for (int a = 0; a < D; ++a) {
+      box.lower[a] = o.lower[a], box.upper[a] = o.upper[a];
+      // A face on the domain's own face meets no fluid (the scene's reader keeps obstacles
+      // inside the domain; 1e-12 as it does).
+      box.exposed[a] = {o.lower[a] > bounds.lower[a] + 1e-12, o.upper[a] < bounds.upper[a] - 1e-12};
+    }
+    layObstacle(box, o.wall, s.dx, s.wallLayers, lattice);
+    solids.push_back(box);
+  }
+  if (!solids.empty()) terms.push_back("obstacles_adami2012");
+  // The walls take the first phase's EOS (eq. 28) and viscosity: solver/SCENES.md, [walls].
+  auto walls = std::make_shared<const FixedWalls<D>>(std::move(lattice.x), std::move(lattice.rule),
+                                                     std::move(lattice.volume), s.h0(), s.kernel,
+                                                     s.phases[0], g);
+  return std::make_unique<WallParticles<D>>(halo, particles ? Vec<D>::Zero() : ghostGravity,
+                                            std::move(walls), std::move(solids),
+                                            std::string(name(s.wallModel)), std::move(terms));
+}
+
+template std::unique_ptr<Boundary<1>> makeBoundary<1>(const Scene&, const Boundaries<1>&);
+template std::unique_ptr<Boundary<2>> makeBoundary<2>(const Scene&, const Boundaries<2>&);
+template std::unique_ptr<Boundary<3>> makeBoundary<3>(const Scene&, const Boundaries<3>&);
+
+}  // namespace sph
