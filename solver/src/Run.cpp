@@ -245,7 +245,7 @@ int run(const Scene& scene, const RunOptions& opt) {
     writeCheckpoint<D>(checkpoint, sim, r, file, series.columns, failedStep);
   };
   const bool progress = opt.progress && isatty(STDERR_FILENO);
-  auto lastPrint = clock::now();
+  auto lastPrint = clock::now(), lastCheckpoint = lastPrint;
   auto since = [&](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
@@ -277,9 +277,13 @@ int run(const Scene& scene, const RunOptions& opt) {
       snapshot(false);
       nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
     }
-    if (sim.time() >= nextCheckpoint * (1 - 1e-12) && sim.time() < scene.endTime * (1 - 1e-12)) {
+    const bool onTime =
+        opt.checkpointMinutes > 0 && since(lastCheckpoint, stepEnd) >= 60.0 * opt.checkpointMinutes;
+    if ((sim.time() >= nextCheckpoint * (1 - 1e-12) || onTime) &&
+        sim.time() < scene.endTime * (1 - 1e-12)) {
       while (nextCheckpoint <= sim.time() * (1 + 1e-12)) nextCheckpoint += scene.checkpointInterval;
       writeCheckpointNow(nullptr);
+      lastCheckpoint = clock::now();
     }
     if (progress && stepEnd - lastPrint > std::chrono::milliseconds(500)) {
       lastPrint = stepEnd;

@@ -76,6 +76,10 @@ int main(int argc, char** argv) {
                   "stop after the first step at or past this simulated time [s], writing a "
                   "checkpoint (the run file's status is then interrupted)")
       ->check(CLI::PositiveNumber);
+  run->add_option("--checkpoint-every", options.checkpointMinutes,
+                  "also write a checkpoint after the first step this many wall-clock minutes "
+                  "after the last one (besides the scene's output.checkpoint_interval)")
+      ->check(CLI::PositiveNumber);
   run->add_option("--threads", options.threads, "OpenMP threads (default: all)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--quiet", options.quiet, "print nothing but errors");

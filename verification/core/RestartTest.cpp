@@ -82,6 +82,42 @@ TEST(Restart, DamBreakStoppedHalfwayContinuesBitForBit) {
   expectSameRun(whole + "/dam_break_dx0.025.h5", restarted);
 }
 
+// A continued run stopped again and continued again is the same run.
+TEST(Restart, RestartedRunStoppedAgainContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = shortDamBreak(out);
+  const std::string whole = out + "/whole", part = out + "/part";
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 2 --quiet").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + part + "' --stop-at 0.1 --quiet").exitCode, 0);
+  const std::string checkpoint = part + "/dam_break_dx0.025.checkpoint.h5";
+  const ProgramResult again =
+      runSph("run --restart '" + checkpoint + "' --stop-at 0.3 --threads 1 --quiet");
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_GE(*doubleAttribute(checkpoint, "/", "time"), 0.3);
+  ASSERT_EQ(runSph("run --restart '" + checkpoint + "' --quiet").exitCode, 0);
+  expectSameRun(whole + "/dam_break_dx0.025.h5", part + "/dam_break_dx0.025.h5");
+}
+
+// The small tank with gravity to 2.5 s fails on energy growth at step 360 (t = 0.057 s): its
+// checkpoint holds the last good state, and the restart takes the failing step again and fails
+// the same way, with the same run file.
+TEST(Restart, FailureCheckpointFailsTheSameWay) {
+  const std::string scene = editedScene({{"end_time = 0.02", "end_time = 2.5"},
+                                         {"snapshot_interval = 0.01", "snapshot_interval = 0.02"}});
+  const fs::path dir = fs::path(scene).parent_path();
+  const std::string out = (dir / "out").string(), h5 = out + "/small_tank.h5";
+  const ProgramResult a = runSph("run '" + scene + "' --out '" + out + "' --threads 1 --quiet");
+  ASSERT_EQ(a.exitCode, 3) << a.output;
+  const std::string checkpoint = out + "/small_tank.checkpoint.h5";
+  EXPECT_EQ(integerAttribute(checkpoint, "/", "after_failure"), 1);
+  const std::string failed = (dir / "failed.h5").string();
+  fs::copy_file(h5, failed);
+  const ProgramResult b = runSph("run --restart '" + checkpoint + "' --threads 2 --quiet");
+  ASSERT_EQ(b.exitCode, 3) << b.output;
+  EXPECT_EQ(stringAttribute(h5, "/", "failure"), stringAttribute(failed, "/", "failure"));
+  expectSameRun(failed, h5);
+}
+
 // The small tank without gravity (RunOutputTest.cpp's long run: its hydrostatic start relaxes,
 // nothing fails) for 2.5 s, some 15,000 steps at about 6,600 a second: long enough to be stopped
 // by a signal part way. `interval` > 0 sets output.checkpoint_interval.

@@ -37,6 +37,9 @@ struct RunOptions {
   // shortened to it, so that a restart continues the uninterrupted run's steps), writes a
   // checkpoint and ends with status interrupted (interrupted_by "stop_at") and exitDone.
   double stopAt = 0.0;
+  // > 0: a checkpoint also after the first step that ends this many wall-clock minutes after the
+  // last one (or the start), besides the scene's output.checkpoint_interval.
+  double checkpointMinutes = 0.0;
 };
 
 // Throws SceneError where the scene passes the limits (checkMemory, checkDuration). Returns
