@@ -137,10 +137,12 @@ CheckpointState<D> resumeFrom(const std::string& path, const Scene& scene,
     throw CheckpointError(path + ": " + e.what());
   }
   if (!same)
-    throw CheckpointError(path +
-                          ": the rates of its state, evaluated again, are not the ones it "
-                          "holds: it was written by another build (git_commit " +
-                          c.commit + ", this one " + provenance().commit + "), or is damaged");
+    throw CheckpointError(
+        path + ": the rates of its state, evaluated again, are not the ones it holds: " +
+        (c.commit != provenance().commit
+             ? "it was written by another build (git_commit " + c.commit + ", this one " +
+                   provenance().commit + ") whose arithmetic differs"
+             : std::string("it is damaged")));
   if (c.commit != provenance().commit)
     std::cerr << path << ": warning: written by the build of git_commit " << c.commit
               << ", this one is " << provenance().commit

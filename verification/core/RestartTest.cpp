@@ -220,7 +220,7 @@ TEST(Restart, MissingOrDamagedCheckpointIsBadInput) {
     H5Dclose(d);
     H5Fclose(f);
   }
-  expectRefused(edited, "are not the ones it holds");
+  expectRefused(edited, "are not the ones it holds: it is damaged");
   // A scene and --restart together, or neither.
   const ProgramResult both =
       runSph("run '" + scenePath("small_tank.toml") + "' --restart '" + checkpoint + "' --quiet");
