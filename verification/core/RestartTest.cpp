@@ -82,6 +82,22 @@ TEST(Restart, DamBreakStoppedHalfwayContinuesBitForBit) {
   expectSameRun(whole + "/dam_break_dx0.025.h5", restarted);
 }
 
+// The same in 3-D (CORE_SCENES/hydrostatic_box_3d.toml: 512 particles, 290 steps), whose
+// checkpoint stores 3-vectors and whose lists hold the ghosts of five walls.
+TEST(Restart, Box3dStoppedHalfwayContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = scenePath("hydrostatic_box_3d.toml");
+  const std::string whole = out + "/whole", part = out + "/part";
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + part + "' --threads 2 --stop-at 0.0277 --quiet")
+                .exitCode,
+            0);
+  const ProgramResult c =
+      runSph("run --restart '" + part + "/hydrostatic_box_3d.checkpoint.h5' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  expectSameRun(whole + "/hydrostatic_box_3d.h5", part + "/hydrostatic_box_3d.h5");
+}
+
 // A continued run stopped again and continued again is the same run.
 TEST(Restart, RestartedRunStoppedAgainContinuesBitForBit) {
   const std::string out = freshOutputDirectory();
