@@ -15,6 +15,8 @@ struct RunLimits {
   double maxSteps = 1e9;   // a year at 30 steps a second, far beyond any run of this solver
   // The XDMF sidecar is rewritten whole at every snapshot (RunFile), so S snapshots write
   // ~1.6 kB S^2 / 2: 80 GB at 1e4. Beyond that a run spends its time rewriting it.
+  // The same bound for the checkpoints (output.checkpoint_interval), each a copy of the run file
+  // so far.
   double maxSnapshots = 1e4;
   std::string outDir = ".";  // the output's estimated size is compared with its free space
 };
