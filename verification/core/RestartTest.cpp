@@ -98,6 +98,25 @@ TEST(Restart, Box3dStoppedHalfwayContinuesBitForBit) {
   expectSameRun(whole + "/hydrostatic_box_3d.h5", part + "/hydrostatic_box_3d.h5");
 }
 
+// A packed start (CORE_SCENES/packed_tank.toml): the restart takes the particles from the
+// checkpoint, packs nothing, and its run file keeps the packing history (/packing/block_0).
+TEST(Restart, PackedStartKeepsItsPackingHistory) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = scenePath("packed_tank.toml");
+  const std::string whole = out + "/whole", part = out + "/part";
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + part + "' --threads 2 --stop-at 0.011 --quiet")
+                .exitCode,
+            0);
+  const ProgramResult c =
+      runSph("run --restart '" + part + "/packed_tank.checkpoint.h5' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  EXPECT_EQ(c.output.find("packing"), std::string::npos) << "the restart packed again:\n"
+                                                         << c.output;
+  EXPECT_FALSE(readDoubles(part + "/packed_tank.h5", "/packing/block_0/kinetic").empty());
+  expectSameRun(whole + "/packed_tank.h5", part + "/packed_tank.h5");
+}
+
 // A continued run stopped again and continued again is the same run.
 TEST(Restart, RestartedRunStoppedAgainContinuesBitForBit) {
   const std::string out = freshOutputDirectory();
