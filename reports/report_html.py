@@ -207,6 +207,37 @@ def performance(items: list) -> str:
     return "".join(parts)
 
 
+def _span(values: list) -> str:
+    return f"{min(values)} .. {max(values)}" if values else "none"
+
+
+def paraview(item: dict | None) -> str:
+    """The run file as ParaView shows it (paraview_view.py)."""
+    if item is None:
+        return '<p class="note">not run: no --paraview directory (the nightly test ' \
+               'paraview.DamBreakOpensWithDefaultReader writes one).</p>'
+    if not item.get("cells_per_step") and item.get("error"):
+        return f'<p class="warn">{escape(item["error"])}</p>'
+    failures = item.get("failures") or []
+    word, cls = ("FAIL", "r-fail") if failures or item.get("error") else ("PASS", "r-pass")
+    rows = [("run file", f"<code>{escape(str(item.get('xdmf', '')))}</code>"),
+            ("ParaView, reader chosen by OpenDataFile", escape(f"{item.get('paraview')}, {item.get('reader')}")),
+            ("time steps", _fmt(item.get("time_steps"))),
+            ("points a step", escape(_span(item.get("points_per_step") or []))),
+            ("cells a step", escape(_span(item["cells_per_step"]))),
+            ("cells a step, legacy XDMFReader", escape(_span(item.get("legacy_reader_cells_per_step") or []))),
+            ("point arrays", escape(", ".join(item.get("arrays") or [])))]
+    table = "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
+    caption = (f"the snapshot at t = {_fmt(item.get('picture_time'))} s as pvpython draws it, points coloured by "
+               "pressure [Pa] over its 2nd to 98th percentile")
+    warn = "".join(f'<p class="warn">{escape(f)}</p>' for f in failures + ([item["error"]] if item.get("error")
+                                                                                 else []))
+    return (f'<p>Opened with ParaView\'s default reader: <span class="{cls}">{word}</span> '
+            '(validation/paraview/open_in_paraview.py: every step\'s points, cells and arrays against the run '
+            f'file).</p><table>{table}</table>{warn}' + _img(item.get("figure"), caption)
+            + f'<p class="note">{escape(caption)}.</p>')
+
+
 def page(report: dict) -> str:
     r = report
     cases = "".join(case_section(c) for c in r["cases"]) or '<p class="note">not run: no run files.</p>'
@@ -228,5 +259,6 @@ Also: <a href="summary.json">summary.json</a>, <a href="junit.xml">junit.xml</a>
 <section><h2>Speed versus accuracy</h2>{speed_accuracy(r['speed_accuracy'])}</section>
 <section><h2>Stability map</h2>{stability(r['stability'])}</section>
 <section><h2>Performance</h2>{performance(r['performance'])}</section>
+<section><h2>The run file in ParaView</h2>{paraview(r.get('paraview'))}</section>
 </body></html>
 """

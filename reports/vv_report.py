@@ -2,7 +2,7 @@
 """V&V report of the SPH solver.
 
     /usr/bin/python3 reports/vv_report.py --runs RUNS --results RESULTS --out reports/out \
-        [--quick] [--perf DIR] [--stability DIR] [--criteria validation/criteria.toml]
+        [--quick] [--perf DIR] [--stability DIR] [--paraview DIR] [--criteria validation/criteria.toml]
 
 Reads every *.h5 run file under --runs and every *.json verification result under --results (reports/SCHEMA.md),
 decides the criteria (validation/criteria.toml, run status, the verification checks) with pytest
@@ -24,6 +24,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
 import analysis  # noqa: E402
+import paraview_view  # noqa: E402
 import plots  # noqa: E402
 import report_html  # noqa: E402
 from criteria import DEFAULT_CRITERIA, NOT_RUN, collect, counts, load_criteria  # noqa: E402
@@ -136,6 +137,8 @@ def main(argv=None) -> int:
     ap.add_argument("--perf", type=Path, help="directory of performance *.json results")
     ap.add_argument("--stability", type=Path, help="directory of stability-sweep *.json results")
     ap.add_argument("--criteria", type=Path, default=DEFAULT_CRITERIA, help="criteria TOML")
+    ap.add_argument("--paraview", type=Path, help="directory of paraview.json and its picture (the dam break "
+                                                   "opened in pvpython, validation/paraview)")
     args = ap.parse_args(argv)
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
@@ -178,10 +181,11 @@ def main(argv=None) -> int:
         "convergence": conv, "speed_accuracy": speed, "figures": analysis.recorded_figures(results),
         "histories": hist, "stability": stability,
         "performance": perf_items(args.perf, out, args.quick),
+        "paraview": paraview_view.read(args.paraview, out),
     }
     (out / "index.html").write_text(report_html.page(report), encoding="utf-8")
     summary = {k: report[k] for k in ("generated", "inputs", "counts", "problems", "environment", "convergence",
-                                      "speed_accuracy", "figures")}
+                                      "speed_accuracy", "figures", "paraview")}
     summary["criteria"] = [c.as_dict() for c in found]
     summary["stability"] = [{k: v for k, v in s.items() if k != "points"} for s in report["stability"]]
     summary["performance"] = [{k: v for k, v in p.items() if k not in ("data", "rows")} for p in report["performance"]]

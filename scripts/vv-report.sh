@@ -17,7 +17,7 @@ fi
 if [ "$tier" = "quick" ]; then scripts/install-deps.sh || exit 1; else scripts/install-deps.sh --report || exit 1; fi
 scripts/build.sh || exit 1
 build=build/release
-rm -rf "$build/runs" "$build/results" "$build/stability"
+rm -rf "$build/runs" "$build/results" "$build/stability" "$build/paraview"
 start=$(date +%s)
 ctest --test-dir "$build" -L "$tier" --output-on-failure -j2 --output-junit ctest-junit.xml
 tests=$?
@@ -25,6 +25,7 @@ echo "tests took $(( $(date +%s) - start )) s"
 extra=()
 [ -d "$build/perf-results" ] && extra+=(--perf "$build/perf-results")
 [ -d "$build/stability" ] && extra+=(--stability "$build/stability")
+[ -d "$build/paraview" ] && extra+=(--paraview "$build/paraview")
 /usr/bin/python3 reports/vv_report.py --runs "$build/runs" --results "$build/results" \
   --out reports/out "${report_flags[@]}" "${extra[@]}"
 report=$?

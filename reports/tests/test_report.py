@@ -4,6 +4,7 @@ import re
 import xml.etree.ElementTree as ET
 
 import h5py
+import matplotlib.image
 import numpy as np
 import numpy.testing as npt
 import pytest
@@ -293,3 +294,27 @@ def test_fixed_length_string_attributes_as_cpp_writes_them(tmp_path, make_run):
     run = read_run(path, tmp_path / "runs")
     assert (run.attrs["status"], run.scene_name, run.label) == ("stable", "dam_break", "dam_break")
     assert isinstance(run.metrics["particles"], int)
+
+
+def test_paraview_section_shows_what_pvpython_found(tmp_path):
+    pv = tmp_path / "paraview"
+    pv.mkdir()
+    matplotlib.image.imsave(pv / "dam_break_pressure.png", np.zeros((4, 4, 3)))
+    found = {"xdmf": "runs/nightly/dam_break.xdmf", "paraview": "paraview version 5.11.0", "reader": "Xdmf3ReaderS",
+             "time_steps": 3, "points_per_step": [1250] * 3, "cells_per_step": [1250, 1250, 1249],
+             "legacy_reader_cells_per_step": [1250] * 3, "arrays": ["pressure"], "picture": "dam_break_pressure.png",
+             "picture_time": 0.65, "failures": ["Xdmf3ReaderS, t = 1.3 s: 1250 points, 1249 cells"]}
+    (pv / "paraview.json").write_text(json.dumps(found))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--paraview", str(pv))
+    html, names = images_exist(out)
+    assert "paraview-dam_break_pressure.png" in names
+    assert "1249 .. 1250" in html and "1249 cells" in html and "r-fail" in html
+    assert summary["paraview"]["reader"] == "Xdmf3ReaderS"
+
+
+def test_paraview_directory_without_its_file_is_a_warning(tmp_path):
+    (tmp_path / "empty").mkdir()
+    rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--paraview", str(tmp_path / "empty"))
+    assert "paraview.json: not read" in (out / "index.html").read_text()
+    assert "not run: no --paraview directory" in report(tmp_path, tmp_path / "runs")[1].joinpath(
+        "index.html").read_text()

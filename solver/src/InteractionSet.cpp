@@ -57,8 +57,8 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
     // The runs of entries this thread wrote, in ascending order: its share of the fluid, then,
     // after each axis, the images it wrote of each run before. The images across the next axis of
     // those entries are its too: an entry's record does not cross to the other core to be imaged.
-    // (With the earlier axes' halo imaged by the last thread, thread 1 imaged, across the floor,
-    // thread 0's images of the walls at the two bottom corners, at every evaluation.)
+    // (Were the earlier axes' halo imaged by the last thread, thread 1 would image, across the
+    // floor, thread 0's images of the walls at the two bottom corners, at every evaluation.)
     std::array<Share, 8> runs{};
     static_assert(D <= 3, "runs: 2^D at most");
     int nRuns = 1;

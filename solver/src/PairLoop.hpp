@@ -184,7 +184,7 @@ struct ForceEvaluation<D>::Workspace {
     // thread's), which it reads too: when the other thread copied it in, each store went to a
     // line that this thread's core had read, and when the two cores share no cache each such
     // store waited for the other core (makeBlock, two threads, rdtsc: that band's copy-in at 1e4
-    // 37-41 us against 7.6-7.9 when the cores share a cache; now 2.1-3.3 us, and thread 0's wait
+    // 37-41 us against 7.6-7.9 when the cores share a cache; with the copy 2.1-3.3 us, and the wait
     // for it at the barrier 32-37 -> 0.4-1.4 us; at 1e3 9.8-10.7 -> 0.6-1.4 us). The rates stay one
     // array, zeroed by each entry's own thread (by the thread that placed it, at a build). Unset
     // arrays: a thread's copy costs memory for its part only (plus whole 2 MiB pages at its ends:
@@ -308,9 +308,9 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   // cells. The grid may have 4 cells per point per halving, as many as the full-size cells would.
   // Reused lists keep the last build's cells and sorted order, and its h_max for the padding (any
   // h gives a far-away, massless entry the same zero terms; a scan of all entries split by count
-  // had one thread read the h of the other's fluid at every evaluation). A build runs in the pair
-  // loop's parallel region: h_max and the box, the cell list, then the pairs, with barriers
-  // between them instead of a region each (two regions fewer).
+  // would have one thread read the h of the other's fluid at every evaluation). A build runs in
+  // the pair loop's parallel region: h_max and the box, the cell list, then the pairs, with
+  // barriers between them instead of a region each (two regions fewer).
   constexpr int cellsPerPoint = 4 << D;
   const int team = std::min(omp_get_max_threads(), CellList<D>::maxTeam);
   if (!reuse) {
@@ -546,9 +546,9 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
       LineVector<int>& list = Skinned ? w.bandLists[bandIndex] : scratch.neighbours;
       std::size_t used = 0;  // the entries of `list` taken by the band's particles so far
       // The forward rows of cell `rowsOf` (at most the (2 reach + 1)^(D-1) rows around it), and
-      // the candidates in them. An array on the stack, not a vector: a vector's push_back was
-      // not inlined once the pair loop's region also held the build (one thread, 1e4 particles,
-      // 101-105 -> 107-117 ns a particle; with the array 97-100 ns).
+      // the candidates in them. An array on the stack, not a vector: a vector's push_back is
+      // not inlined into a region that also holds the build (one thread, 1e4 particles, 107-117
+      // ns a particle with the vector, 97-100 ns with the array).
       constexpr int rowsAround = D == 1   ? 1
                                  : D == 2 ? 2 * reach + 1
                                           : (2 * reach + 1) * (2 * reach + 1);

@@ -134,8 +134,10 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
   const double columns = 9.0 + s.phases.size() + s.probes.size();  // Run.cpp's Series
   const double rows = e.steps / s.seriesEvery + e.snapshots;
   // A snapshot: position and velocity (3 doubles), density, pressure, h, mass, phase (int32);
-  // its XDMF entry about 1.6 kB.
-  e.outputBytes = e.snapshots * (e.particles * 84.0 + 1600.0) + rows * columns * 8.0;
+  // its XDMF entry about 1.6 kB and its inline connectivity "0 1 ... N-1", at most the digits of
+  // N and a space a particle (XdmfSidecar.cpp).
+  const double indexBytes = std::floor(std::log10(std::max(e.particles, 1.0))) + 2.0;
+  e.outputBytes = e.snapshots * (e.particles * (84.0 + indexBytes) + 1600.0) + rows * columns * 8.0;
 
   m << s.file << ": key ";
   if (!(e.snapshots <= limits.maxSnapshots)) {

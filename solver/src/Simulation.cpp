@@ -345,7 +345,7 @@ void Simulation<D>::prepare() {
 // the pass that also does the stage's other work (periodic wrap, reflection, the checks, the
 // lists' motion): a parallel region less each (0.6 us on two threads whose cores share a cache,
 // more when not: issue 7). Each thread writes the particles it reads in every other loop of the
-// step (a copy by one thread had the other's share of m and phase cross between the cores twice
+// step (a copy by one thread would have the other's share of m and phase cross the cores twice
 // a step). y*.p is not read by the trial evaluation: rates() takes p from the EOS, and the final
 // stage sets the accepted state's p (the same EOS, so the same p the set's fluid entries get).
 template <int D>

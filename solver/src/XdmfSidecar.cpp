@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "sph/RunFile.hpp"  // OutputError
@@ -11,6 +12,23 @@
 namespace sph {
 
 namespace {
+
+// The polyvertex cells' connectivity, "0 1 ... n-1": each particle one vertex cell. ParaView's
+// default reader (Xdmf3ReaderS, ParaView 5.11) makes cells only from an explicit connectivity
+// item: with NumberOfElements alone it gives the points and no cells, which draw nothing. The
+// item is written inline in every grid: an item shared between grids (by xi:include) the Xdmf 3
+// library moves into the first topology that reads it, and the other steps get no cells (tried
+// with ParaView 5.11). It costs at most 8 bytes a particle a snapshot (up to 10^7 particles),
+// against the run file's 84.
+std::string vertexIndices(std::size_t n) {
+  std::string s;
+  s.reserve(n * 8);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) s += ' ';
+    s += std::to_string(i);
+  }
+  return s;
+}
 
 std::string text(const std::string& h5, const std::vector<XdmfSnapshot>& snapshots) {
   const std::string file = std::filesystem::path(h5).filename().string();
@@ -23,12 +41,18 @@ std::string text(const std::string& h5, const std::vector<XdmfSnapshot>& snapsho
       << type << "\" Precision=\"" << bytes << "\" Format=\"HDF\">" << file << ":" << e.group << "/"
       << field << "</DataItem>\n";
   };
+  std::map<std::size_t, std::string> indices;  // by particle count: one string for a run's steps
   for (const XdmfSnapshot& e : snapshots) {
+    auto [at, added] = indices.try_emplace(e.n);
+    if (added) at->second = vertexIndices(e.n);
     x << "   <Grid Name=\"" << e.group.substr(e.group.rfind('/') + 1)
       << "\" GridType=\"Uniform\">\n"
       << "    <Time Value=\"" << e.time << "\"/>\n"
       << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.n
-      << "\" NodesPerElement=\"1\"/>\n    <Geometry GeometryType=\"XYZ\">\n";
+      << "\" NodesPerElement=\"1\">\n"
+      << "      <DataItem Dimensions=\"" << e.n
+      << "\" NumberType=\"Int\" Precision=\"8\" Format=\"XML\">" << at->second << "</DataItem>\n"
+      << "    </Topology>\n    <Geometry GeometryType=\"XYZ\">\n";
     item(e, "position", 3, "Float", 8);
     x << "    </Geometry>\n";
     x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n";

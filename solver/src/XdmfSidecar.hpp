@@ -1,7 +1,7 @@
 #pragma once
-// The XDMF 3 sidecar of a run file (RunFile.cpp): a temporal collection of polyvertex grids
-// pointing into the HDF5 file, which ParaView opens as a time series. Internal to the solver
-// library.
+// The XDMF 3 sidecar of a run file (RunFile.cpp): a temporal collection of polyvertex grids, each
+// particle a vertex cell, pointing into the HDF5 file, which ParaView opens as a time series
+// (layout: reports/SCHEMA.md). Internal to the solver library.
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -79,7 +79,7 @@ def sweeps():
         out[f"cfl_acoustic_{case}"] = (case, "acoustic CFL factor (Morris 1997: 0.25)", "kernel", pts, KERNELS)
     # The same tank at rest to 4 s (t sqrt(g/H) = 25), at and below the Morris CFL: Heun's step amplifies an
     # undamped oscillation a little every step, and at 0.25 the tank's energy grows after about 2 s with
-    # Wendland and the cubic spline even with beta = 1 (session 28; the energy check stops such a run).
+    # Wendland and the cubic spline even with beta = 1 (the energy check stops such a run).
     out["cfl_acoustic_long_hydrostatic_tank"] = (
         "hydrostatic_tank", "acoustic CFL factor, tank at rest to 4 s", "kernel",
         [(c, k, dict(cfl=c, kernel=kern, end_time=4.0)) for c in (0.1, 0.15, 0.2, 0.25)

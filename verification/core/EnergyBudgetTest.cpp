@@ -1,4 +1,4 @@
-// Session 28: the energy check (EnergyBudget.hpp). The Tait equation's internal energy against a
+// The energy check (EnergyBudget.hpp). The Tait equation's internal energy against a
 // quadrature of its definition, and the check on states whose energy is known by hand.
 #include <gtest/gtest.h>
 
@@ -114,7 +114,7 @@ TEST(EnergyBudget, NamesEnergyFromNowhere) {
 // With a background pressure the internal energy is measured from its minimum (p = 0), not from
 // rho0: a particle at rest at rho0 with p0 = -2 rho g H of the closed-box sweep (the tensile
 // instability's scenes) holds e(rho0) - e_min > 0, and a state that only trades it for motion
-// passes. Measured from rho0 the budget was negative and every such run failed at its first check.
+// passes. Measured from rho0 the budget would be negative and every such run would fail at once.
 TEST(EnergyBudget, HoldsWithABackgroundPressure) {
   for (double p0 : {-3924.0, 500.0}) {
     const sph::Scene scene = box("free_slip", "[0.0, -9.81]", p0);

@@ -44,7 +44,7 @@ void expectInside(const sph::Scene& s, std::size_t expected) {
 }
 
 TEST(LatticeStart, BlockThinnerThanHalfDxHoldsNoParticle) {
-  // 0.004 = 0.4 dx: round(0.4) = 0 nodes across, so none at all (it had 10, at y = 0.005).
+  // 0.004 = 0.4 dx: round(0.4) = 0 nodes across, so none at all.
   sph::Scene s = block("0.1");
   s.fluids[0].upper[1] = 0.004;
   expectInside(s, 0);

@@ -1,6 +1,6 @@
-// Issue 32, parts 8 and 9: what `sph run` leaves behind when it does not end on its own. A rerun
-// into the same --out truncated the earlier run file at its start, so killing the rerun destroyed
-// a finished result; SIGINT and SIGTERM killed the process with the run file's status `running`.
+// Issue 32, parts 8 and 9: what `sph run` leaves behind when it does not end on its own. A killed
+// rerun into the same --out must leave the earlier run file whole, and SIGINT or SIGTERM must end
+// the run with a run file whose status is `interrupted`.
 #include <gtest/gtest.h>
 
 #include <csignal>

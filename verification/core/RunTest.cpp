@@ -83,7 +83,7 @@ TEST(FailureDetection, TimeStepCollapse) {
   expectFailure("fail_dt_collapse.toml", "fail_dt_collapse", "dt_collapse");
 }
 
-// Session 28: a tank at rest without artificial viscosity, stepped at 2.4 times the acoustic limit,
+// A tank at rest without artificial viscosity, stepped at 2.4 times the acoustic limit,
 // gains energy from nowhere while its density stays in the (opened) band.
 TEST(FailureDetection, EnergyGrowth) {
   expectFailure("fail_energy_growth.toml", "fail_energy_growth", "energy_growth");

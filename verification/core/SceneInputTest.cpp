@@ -97,8 +97,8 @@ TEST(SceneTypes, StringForABoolean) {
                  "must be true or false, got a string");
 }
 
-// Part 4. A misspelt required key was reported only as the right key missing. Now the unknown
-// key is named, where it is (line:column), with the key it was probably meant to be.
+// Part 4. A misspelt required key is named itself, where it is (line:column), with the key it was
+// probably meant to be, never only as the right key missing.
 TEST(SceneKeys, MisspeltRequiredKey) {
   const std::string path = editedScene("end_time = 0.02", "end_tme = 0.02");
   const std::string text = readText(path);

@@ -5,7 +5,7 @@
 // it; mirror walls at rest do no work. So E never exceeds its start by more than round-off and
 // the walls' small imbalance. Heun's step, though, amplifies an undamped oscillation a little
 // every step (|1 + z + z^2/2| > 1 for z = i omega dt), and without enough damping a run can gain
-// energy from nowhere and still stay inside the density band (validation/README.md, session 28).
+// energy from nowhere and still stay inside the density band (validation/README.md).
 #include <optional>
 #include <vector>
 

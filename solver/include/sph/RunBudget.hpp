@@ -14,7 +14,8 @@ struct RunLimits {
   double maxMemory = 0.0;  // bytes; 0: what the machine has available now (availableMemory)
   double maxSteps = 1e9;   // a year at 30 steps a second, far beyond any run of this solver
   // The XDMF sidecar is rewritten whole at every snapshot (RunFile), so S snapshots write
-  // ~1.6 kB S^2 / 2: 80 GB at 1e4. Beyond that a run spends its time rewriting it.
+  // ~(1.6 kB + 6 N) S^2 / 2 for N particles (its inline connectivity: XdmfSidecar.cpp): 80 GB
+  // at 1e4 for a few particles. Beyond that a run spends its time rewriting it.
   // The same bound for the checkpoints (output.checkpoint_interval), each a copy of the run file
   // so far.
   double maxSnapshots = 1e4;
