@@ -32,7 +32,7 @@ std::optional<double> lowestInternalEnergy(const Phase& ph) {
 }  // namespace
 
 template <int D>
-EnergyBudget<D>::EnergyBudget(const Scene& scene, const Particles<D>& start) : scene_(&scene) {
+void EnergyBudget<D>::setDefined(const Scene& scene) {
   for (int a = 0; a < D; ++a) {
     const bool periodic = scene.faces[a][0] == FaceKind::periodic;
     if (periodic && scene.bodyAcceleration[a] != 0.0) defined_ = false;
@@ -45,6 +45,17 @@ EnergyBudget<D>::EnergyBudget(const Scene& scene, const Particles<D>& start) : s
     if (!lowest) defined_ = false;
     lowest_.push_back(lowest.value_or(0.0));
   }
+}
+
+template <int D>
+EnergyBudget<D>::EnergyBudget(const Scene& scene, const Parts& start, double roundOff)
+    : scene_(&scene), start_(start), roundOff_(roundOff) {
+  setDefined(scene);
+}
+
+template <int D>
+EnergyBudget<D>::EnergyBudget(const Scene& scene, const Particles<D>& start) : scene_(&scene) {
+  setDefined(scene);
   start_ = parts(start);
   double scale = 0;
   for (std::size_t i = 0; i < start.size(); ++i) {

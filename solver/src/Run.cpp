@@ -8,11 +8,14 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "sph/Checkpoint.hpp"
 #include "sph/Diagnostics.hpp"
 #include "sph/EnergyBudget.hpp"
 #include "sph/InitialParticles.hpp"
@@ -25,6 +28,10 @@
 namespace sph {
 
 namespace {
+
+// Particles move less than a cell (h) in 10 steps (the acoustic CFL step is a fraction of h / c0,
+// and the flow is slower than c0): the stored order stays close to the cell order.
+constexpr int cellOrderSteps = 10;
 
 // The particles in the order of the start (ids), whatever order the simulation keeps them in.
 template <int D>
@@ -113,21 +120,58 @@ void writePacking(RunFile& file, const Scene& scene, const PackedBlock& b) {
               << ", above stop_kinetic_energy = " << f.packingStop << "\n";
 }
 
+// The state of a checkpoint and the simulation continued from it (Simulation::resume). The
+// rates of a state whose next step did not fail, evaluated again, must be the checkpoint's to the
+// bit: else the build or the lists differ from the run's.
+template <int D>
+CheckpointState<D> resumeFrom(const std::string& path, const Scene& scene,
+                              std::optional<Simulation<D>>& sim) {
+  CheckpointState<D> c = readCheckpoint<D>(path, scene);
+  sim.emplace(scene, c.particles);
+  sim->particles().p = c.particles.p;
+  sim->keepCellOrder(cellOrderSteps);
+  bool same = false;
+  try {
+    same = sim->resume(c.simulation, c.rates, !c.afterFailure);
+  } catch (const std::invalid_argument& e) {
+    throw CheckpointError(path + ": " + e.what());
+  }
+  if (!same)
+    throw CheckpointError(
+        path + ": the rates of its state, evaluated again, are not the ones it holds: " +
+        (c.commit != provenance().commit
+             ? "it was written by another build (git_commit " + c.commit + ", this one " +
+                   provenance().commit + ") whose arithmetic differs"
+             : std::string("it is damaged")));
+  if (c.commit != provenance().commit)
+    std::cerr << path << ": warning: written by the build of git_commit " << c.commit
+              << ", this one is " << provenance().commit
+              << ": the continued run may differ from an uninterrupted one in the last bits\n";
+  return c;
+}
+
 template <int D>
 int run(const Scene& scene, const RunOptions& opt) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
+  const bool restarted = !opt.restart.empty();
   std::vector<PackedBlock> packed;
-  Simulation<D> sim(scene, latticeParticles<D>(scene, &packed));
-  // Particles move less than a cell (h) in 10 steps (the acoustic CFL step is a fraction of
-  // h / c0, and the flow is slower than c0): the stored order stays close to the cell order.
-  sim.keepCellOrder(10);
+  std::optional<Simulation<D>> storage;
+  CheckpointState<D> resumed;
+  if (restarted) {
+    resumed = resumeFrom<D>(opt.restart, scene, storage);
+  } else {
+    storage.emplace(scene, latticeParticles<D>(scene, &packed));
+    storage->keepCellOrder(cellOrderSteps);
+  }
+  Simulation<D>& sim = *storage;
   if (sim.particles().size() == 0) {
     std::cerr << scene.file << ": the fluid blocks hold no particles at dx = " << scene.dx << "\n";
     return exitBadInput;
   }
   std::filesystem::create_directories(opt.outDir);
   RunFile file((std::filesystem::path(opt.outDir) / (scene.name + ".h5")).string());
+  const std::string checkpoint = checkpointPath(opt.outDir, scene);
   const Provenance p = provenance();
   file.attribute("sph_version", p.version), file.attribute("git_commit", p.commit);
   file.attribute("compiler", p.compiler), file.attribute("cxx_flags", p.flags);
@@ -145,6 +189,12 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("boundary_model", std::string(sim.boundary().name()));
   file.attribute("status", std::string("running"));
   file.text("/scene", scene.text);
+  if (restarted) {
+    file.attribute("restarted_from", opt.restart);
+    file.attribute("restart_time", sim.time());
+    file.attribute("restart_step", std::int64_t(sim.step()));
+    adoptCheckpointRecord(opt.restart, file);
+  }
   for (const PackedBlock& b : packed) writePacking(file, scene, b);
 
   Series series(scene);
@@ -159,20 +209,46 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.snapshot(sim.time(), sim.step(), fieldsOf(sim.particles(), sim.ids()), lastGood);
     snapshotted = sim.step();
   };
-  sim.prepare();
-  record();
-  snapshot(false);
+  if (!restarted) {
+    sim.prepare();
+    record();
+    snapshot(false);
+  } else {
+    const RunProgress& r = resumed.progress;
+    recorded = r.recorded, snapshotted = r.snapshotted;
+    series.volume0 = r.volume0, series.total0 = r.total0, series.maxVariation = r.maxVariation;
+  }
   // Every series_every steps, as one of the simulation's checks of a new state: a state that fails
   // it is not taken, so the last good one is the simulation's own.
-  const EnergyBudget<D> energy(scene, sim.particles());
+  const EnergyBudget<D> energy =
+      restarted ? EnergyBudget<D>(scene,
+                                  {resumed.progress.energyKinetic, resumed.progress.energyInternal,
+                                   resumed.progress.energyPotential},
+                                  resumed.progress.energyRoundOff)
+                : EnergyBudget<D>(scene, sim.particles());
   if (energy.defined())
     sim.setCheck([&](const Particles<D>& s, double t, long step) -> std::optional<Failure> {
       if (step % scene.seriesEvery != 0) return std::nullopt;
       return energy.check(s, sim.ids(), t, step);
     });
   double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
+  double nextCheckpoint = scene.checkpointInterval > 0 ? scene.checkpointInterval : 1e300;
+  if (restarted)
+    nextSnapshot = resumed.progress.nextSnapshot, nextCheckpoint = resumed.progress.nextCheckpoint;
+  // The checkpoint of the state now: after the step's record and snapshot, before the ones a
+  // stop adds (the uninterrupted run has neither).
+  StepCounters beforeStep;  // the counters before the last step (a failed one counted its own)
+  auto writeCheckpointNow = [&](const StepCounters* failedStep) {
+    RunProgress r;
+    r.nextSnapshot = nextSnapshot, r.nextCheckpoint = nextCheckpoint;
+    r.recorded = recorded, r.snapshotted = snapshotted;
+    r.volume0 = series.volume0, r.total0 = series.total0, r.maxVariation = series.maxVariation;
+    r.energyKinetic = energy.start().kinetic, r.energyInternal = energy.start().internal;
+    r.energyPotential = energy.start().potential, r.energyRoundOff = energy.roundOff();
+    writeCheckpoint<D>(checkpoint, sim, r, file, series.columns, failedStep);
+  };
   const bool progress = opt.progress && isatty(STDERR_FILENO);
-  auto lastPrint = clock::now();
+  auto lastPrint = clock::now(), lastCheckpoint = lastPrint;
   auto since = [&](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
   };
@@ -181,11 +257,18 @@ int run(const Scene& scene, const RunOptions& opt) {
   const int maxThreads = omp_get_max_threads();
   ThreadTuner tuner(maxThreads, opt.fixedThreads);
   std::optional<Failure> failure;
-  int interrupted = 0;  // the signal that stopped the run (Interrupt.hpp)
+  int interrupted = 0;   // the signal that stopped the run (Interrupt.hpp)
+  bool stopped = false;  // at --stop-at
   while (sim.time() < scene.endTime * (1 - 1e-12)) {
+    if (opt.stopAt > 0 && sim.time() >= opt.stopAt) {
+      stopped = true;
+      break;
+    }
     if ((interrupted = interruptSignal())) break;
     omp_set_num_threads(tuner.threads());
     const auto stepStart = clock::now();
+    beforeStep = {sim.forceEvaluations(), sim.reusedNeighbourLists(), sim.wallReflections(),
+                  sim.maxReflectionDepth()};
     failure = sim.advance(std::min(nextSnapshot, scene.endTime) - sim.time());
     const auto stepEnd = clock::now();
     tuner.took(since(stepStart, stepEnd));
@@ -196,6 +279,14 @@ int run(const Scene& scene, const RunOptions& opt) {
     if (atSnapshot) {
       snapshot(false);
       nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
+    }
+    const bool onTime =
+        opt.checkpointMinutes > 0 && since(lastCheckpoint, stepEnd) >= 60.0 * opt.checkpointMinutes;
+    if ((sim.time() >= nextCheckpoint * (1 - 1e-12) || onTime) &&
+        sim.time() < scene.endTime * (1 - 1e-12)) {
+      while (nextCheckpoint <= sim.time() * (1 + 1e-12)) nextCheckpoint += scene.checkpointInterval;
+      writeCheckpointNow(nullptr);
+      lastCheckpoint = clock::now();
     }
     if (progress && stepEnd - lastPrint > std::chrono::milliseconds(500)) {
       lastPrint = stepEnd;
@@ -209,16 +300,18 @@ int run(const Scene& scene, const RunOptions& opt) {
   omp_set_num_threads(maxThreads);
   const double onAll = tuner.shareOnAll();
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
+  const bool early = failure || interrupted || stopped;
+  if (early) writeCheckpointNow(failure ? &beforeStep : nullptr);
   if (failure) {
     file.attribute("status", std::string("unstable"));
     file.attribute("failure_cause", std::string(name(failure->cause)));
     file.attribute("failure", failure->message);
     snapshot(true);
-  } else if (interrupted) {
+  } else if (interrupted || stopped) {
     // The state of the last step is a good one (checked as every step's): the run file ends with
     // it, so a run stopped on purpose keeps all it computed.
     file.attribute("status", std::string("interrupted"));
-    file.attribute("interrupted_by", std::string(signalName(interrupted)));
+    file.attribute("interrupted_by", std::string(stopped ? "stop_at" : signalName(interrupted)));
     file.attribute("failure_cause", std::string());
     file.attribute("failure", std::string());
     if (recorded != sim.step()) record();
@@ -245,13 +338,18 @@ int run(const Scene& scene, const RunOptions& opt) {
   for (std::size_t k = 0; k < scene.phases.size(); ++k)
     file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
   file.finish();
+  // A run that reached its end needs its checkpoint no more: the run file holds it all.
+  if (!early) {
+    std::error_code ignored;
+    std::filesystem::remove(checkpoint, ignored);
+  }
 
   if (!opt.quiet) {
     std::printf("%s: %s at t = %.6g s after %ld steps, %zu particles, wall time %.2f s\n",
                 scene.name.c_str(),
-                failure       ? "UNSTABLE"
-                : interrupted ? "interrupted"
-                              : "done",
+                failure                  ? "UNSTABLE"
+                : interrupted || stopped ? "interrupted"
+                                         : "done",
                 sim.time(), sim.step(), sim.particles().size(), wall);
     std::printf("  max volume variation %.4f %%", 100 * series.maxVariation[0]);
     for (std::size_t k = 0; k < scene.phases.size(); ++k)
@@ -264,18 +362,27 @@ int run(const Scene& scene, const RunOptions& opt) {
       std::printf("  steps on %d threads %.0f %%, on one %.0f %%%s\n", maxThreads, 100 * onAll,
                   100 * (1 - onAll), opt.fixedThreads ? " (--fixed-threads)" : "");
     std::printf("  run file %s\n", file.path().c_str());
+    if (early) std::printf("  checkpoint %s\n", checkpoint.c_str());
   }
+  const std::string resume = "; sph run --restart " + checkpoint + " continues it";
   if (failure) {
     std::cerr << scene.file << ": numerical failure (" << name(failure->cause)
-              << "): " << failure->message << "\n";
+              << "): " << failure->message << "; the checkpoint " << checkpoint
+              << " holds the last good state\n";
     return exitNumericalFailure;
   }
   if (interrupted) {
     std::cerr << scene.file << ": interrupted by " << signalName(interrupted)
               << " at t = " << sim.time() << " s (of " << scene.endTime << " s) after "
               << sim.step() << " steps; the run file " << file.path()
-              << " holds the run so far (status interrupted)\n";
+              << " holds the run so far (status interrupted)" << resume << "\n";
     return exitInterrupted + interrupted;
+  }
+  if (stopped) {
+    if (!opt.quiet)
+      std::printf("  stopped at t = %.6g s (--stop-at %.6g s)%s\n", sim.time(), opt.stopAt,
+                  resume.c_str());
+    return exitDone;
   }
   return exitDone;
 }

@@ -147,6 +147,15 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
       << " (the XDMF sidecar is rewritten at each: RunBudget.hpp)";
     throw SceneError(m.str());
   }
+  // A checkpoint copies the run file so far (Checkpoint.hpp): C of them write ~C/2 run files.
+  const double checkpoints = s.checkpointInterval > 0 ? s.endTime / s.checkpointInterval : 0.0;
+  if (!(checkpoints <= limits.maxSnapshots)) {
+    m << "'output.checkpoint_interval': a checkpoint every " << s.checkpointInterval << " s to "
+      << "'numerics.end_time' = " << s.endTime << " s makes about " << checkpoints
+      << " checkpoints, more than " << limits.maxSnapshots
+      << " (each copies the run file so far: RunBudget.hpp)";
+    throw SceneError(m.str());
+  }
   if (!(e.steps <= limits.maxSteps)) {
     m << "'numerics.end_time': the run would take about " << e.steps << " steps, more than "
       << limits.maxSteps << " (sph check/run --max-steps): end_time = " << s.endTime

@@ -335,6 +335,65 @@ void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, 
   guarded([&] { writeXdmf(xdmfOf(path_) + ".partial", writing_, entries); });
 }
 
+namespace {
+constexpr const char* recordGroups[] = {"series", "snapshots", "packing"};
+
+// Copies `from`/<name> to `to`/<name> for each record group that `from` holds.
+void copyRecord(hid_t from, const std::string& fromGroup, hid_t to, const std::string& toGroup,
+                const std::string& path) {
+  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose, path, "a property list");
+  check(H5Pset_create_intermediate_group(lcpl, 1), path, "a property list");
+  for (const char* name : recordGroups) {
+    const std::string source = fromGroup + name, target = toGroup + name;
+    if (!exists(from, source, path)) continue;
+    check(H5Ocopy(from, source.c_str(), to, target.c_str(), H5P_DEFAULT, lcpl), path,
+          "copying " + source + " to " + target);
+  }
+}
+
+std::string asGroupPrefix(const std::string& group) {
+  return group.empty() || group.back() != '/' ? group + "/" : group;
+}
+}  // namespace
+
+void RunFile::copyRecordTo(std::int64_t into, const std::string& under,
+                           const std::string& intoPath) {
+  if (broken_ || file_ < 0)
+    throw OutputError(writing_ + ": the run file takes no more writes (an earlier one failed)");
+  copyRecord(file_, "/", into, asGroupPrefix(under), intoPath);
+}
+
+void RunFile::adoptRecord(std::int64_t from, const std::string& under) {
+  guarded([&] {
+    copyRecord(from, asGroupPrefix(under), file_, "/", writing_);
+    snapshots_.clear();
+    if (!exists(file_, "/snapshots", writing_)) return;
+    Handle g(H5Gopen2(file_, "/snapshots", H5P_DEFAULT), H5Gclose, writing_, "opening /snapshots");
+    H5G_info_t info{};
+    check(H5Gget_info(g, &info), writing_, "listing /snapshots");
+    for (hsize_t k = 0; k < info.nlinks; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "/snapshots/%05llu", static_cast<unsigned long long>(k));
+      Handle s(H5Gopen2(file_, name, H5P_DEFAULT), H5Gclose, writing_,
+               std::string("opening ") + name);
+      double time = 0;
+      Handle a(H5Aopen(s, "time", H5P_DEFAULT), H5Aclose, writing_, std::string(name) + " time");
+      check(H5Aread(a, H5T_NATIVE_DOUBLE, &time), writing_, std::string(name) + " time");
+      Handle d(H5Dopen2(s, "density", H5P_DEFAULT), H5Dclose, writing_,
+               std::string(name) + " density");
+      Handle space(H5Dget_space(d), H5Sclose, writing_, std::string(name) + " density");
+      hsize_t n = 0;
+      if (H5Sget_simple_extent_dims(space, &n, nullptr) < 0)
+        hdf5::fail(writing_, std::string("the extent of ") + name + "/density");
+      snapshots_.push_back({name, time, static_cast<std::size_t>(n)});
+    }
+  });
+  flush();
+  std::vector<XdmfSnapshot> entries;
+  for (const Entry& s : snapshots_) entries.push_back({s.group, s.time, s.n});
+  guarded([&] { writeXdmf(xdmfOf(path_) + ".partial", writing_, entries); });
+}
+
 void RunFile::flush() {
   guarded([&] { check(H5Fflush(file_, H5F_SCOPE_GLOBAL), writing_, "flushing the run file"); });
 }

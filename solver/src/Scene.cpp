@@ -472,8 +472,9 @@ Scene parseScene(const std::string& text, const std::string& file) {
   readWalls(top.sub("walls"), top.array("obstacle"), top.sub("domain"), s);
 
   SceneTable output = top.sub("output");
-  output.allow({"snapshot_interval", "series_every"});
+  output.allow({"snapshot_interval", "series_every", "checkpoint_interval"});
   s.snapshotInterval = output.nonNegative("snapshot_interval", 0.0);
+  s.checkpointInterval = output.nonNegative("checkpoint_interval", 0.0);
   const long seriesEvery = output.integer("series_every", 1);
   if (seriesEvery < 1) output.fail("series_every", "must be a positive whole number");
   s.seriesEvery = static_cast<int>(seriesEvery);

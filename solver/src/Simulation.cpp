@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -523,6 +524,53 @@ void Simulation<D>::storeInCellOrder() {
   std::swap(y_, to);
   std::swap(id_, idScratch_);
   listedAt_.clear();  // the lists were of the old order
+}
+
+template <int D>
+typename Simulation<D>::Resumable Simulation<D>::resumable() const {
+  Resumable r;
+  r.ids = id_;
+  r.time = t_, r.lastDt = dt_, r.dtFloor = dtFloor_, r.reflectionDepth = reflectionDepth_;
+  r.skin = skin_, r.limit = limit_;
+  r.step = step_, r.evaluations = evaluations_, r.reflections = reflections_;
+  r.reusedLists = reusedLists_;
+  r.listedAt = listedAt_, r.listedH = listedH_;
+  return r;
+}
+
+template <int D>
+bool Simulation<D>::resume(const Resumable& r, const Derivatives<D>& rates, bool verify) {
+  const std::size_t n = y_.size();
+  if (r.ids.size() != n || (!r.listedAt.empty() && r.listedAt.size() != n) ||
+      r.listedH.size() != r.listedAt.size() || rates.drhodt.size() != n)
+    throw std::invalid_argument("the particle ids, rates or neighbour lists are not of the " +
+                                std::to_string(n) + " particles");
+  id_ = r.ids;
+  t_ = r.time, dt_ = r.lastDt, dtFloor_ = r.dtFloor, reflectionDepth_ = r.reflectionDepth;
+  limit_ = r.limit, step_ = r.step, reflections_ = r.reflections;
+  // The lists' build from the listed state: a rescan of the halo and the cell list of its
+  // positions and h (the other fields set no list, no cell and no halo member).
+  listedAt_.clear();
+  const bool skinned = skinFraction_ > 0 && !halo_;
+  if (skinned && !r.listedAt.empty()) {
+    Particles<D> listed = y_;
+    listed.r = r.listedAt, listed.h = r.listedH;
+    this->rates(listed, t_, fStar_);
+  }
+  bool same = true;
+  if (verify) {
+    this->rates(y_, t_, f_);
+    auto equal = [](const auto& a, const auto& b) {
+      return std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+    };
+    same = equal(f_.dvdt, rates.dvdt) && equal(f_.drhodt, rates.drhodt) &&
+           equal(f_.dhdt, rates.dhdt) && (!skinned || skin_ == r.skin);
+  } else {
+    f_ = rates;
+  }
+  ratesValid_ = true;
+  evaluations_ = r.evaluations, reusedLists_ = r.reusedLists;  // the run's, not these
+  return same;
 }
 
 template class Simulation<1>;

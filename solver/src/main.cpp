@@ -4,11 +4,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <new>
 #include <stdexcept>
 
+#include "sph/Checkpoint.hpp"
 #include "sph/Interrupt.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
@@ -63,8 +65,21 @@ int main(int argc, char** argv) {
   options.progress = true;
 
   auto* run = app.add_subcommand("run", "run a scene to its end time and write <out>/<name>.h5");
-  run->add_option("scene", scenePath, "scene file (TOML)")->required();
-  run->add_option("--out", options.outDir, "output directory")->capture_default_str();
+  run->add_option("scene", scenePath, "scene file (TOML); not with --restart");
+  run->add_option("--out", options.outDir,
+                  "output directory (with --restart: default the checkpoint's directory)")
+      ->capture_default_str();
+  run->add_option("--restart", options.restart,
+                  "continue the run of a checkpoint (<out>/<name>.checkpoint.h5) to its end time, "
+                  "bit for bit as if it had not stopped; the scene is the checkpoint's");
+  run->add_option("--stop-at", options.stopAt,
+                  "stop after the first step at or past this simulated time [s], writing a "
+                  "checkpoint (the run file's status is then interrupted)")
+      ->check(CLI::PositiveNumber);
+  run->add_option("--checkpoint-every", options.checkpointMinutes,
+                  "also write a checkpoint after the first step this many wall-clock minutes "
+                  "after the last one (besides the scene's output.checkpoint_interval)")
+      ->check(CLI::PositiveNumber);
   run->add_option("--threads", options.threads, "OpenMP threads (default: all)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--quiet", options.quiet, "print nothing but errors");
@@ -176,10 +191,25 @@ int main(int argc, char** argv) {
     }
   }
   options.limits.maxMemory = static_cast<double>(maxMemory);
+  const bool restart = run->parsed() && !options.restart.empty();
+  if (run->parsed() && restart == !scenePath.empty()) {
+    std::cerr << "error: sph run takes a scene file or --restart CHECKPOINT, "
+              << (restart ? "not both" : "and got neither") << "\n";
+    return sph::exitBadInput;
+  }
   sph::Scene scene;
   try {
-    scene = sph::readScene(scenePath);
+    if (restart) {
+      scene = sph::checkpointScene(options.restart);
+      if (run->count("--out") == 0)
+        options.outDir = std::filesystem::absolute(options.restart).parent_path().string();
+    } else {
+      scene = sph::readScene(scenePath);
+    }
   } catch (const sph::SceneError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return sph::exitBadInput;
+  } catch (const sph::CheckpointError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return sph::exitBadInput;
   }

@@ -95,6 +95,14 @@ TEST(RunBudget, EndlessEndTimeWithSnapshots) {
                  "to 'numerics.end_time' = 1e+30 s makes about 1e+32 snapshots, more than 1e+04");
 }
 
+// Issue 32, checkpoints: each copies the run file so far, so a checkpoint at every step of a long
+// run would rewrite it thousands of times over.
+TEST(RunBudget, TinyCheckpointInterval) {
+  expectRejected("series_every = 5", "series_every = 5\ncheckpoint_interval = 1e-9",
+                 "output.checkpoint_interval",
+                 "to 'numerics.end_time' = 0.02 s makes about 2e+07 checkpoints, more than 1e+04");
+}
+
 TEST(RunBudget, TinyAcousticCfl) {
   expectRejected("h_over_dx = 1.33", "h_over_dx = 1.33\ncfl_acoustic = 1e-300",
                  "numerics.cfl_acoustic", "h / (c0 + |v|) = 1e-300 x 0.0133 m");

@@ -40,7 +40,14 @@ class EnergyBudget {
   };
   Parts parts(const Particles<D>& s) const;
 
+  // The budget of a run continued from a checkpoint: the start's parts and the round-off
+  // allowance as the run's start gave them (start(), roundOff()).
+  EnergyBudget(const Scene& scene, const Parts& start, double roundOff);
+  const Parts& start() const { return start_; }
+  double roundOff() const { return roundOff_; }
+
  private:
+  void setDefined(const Scene& scene);  // defined_ and lowest_
   const Scene* scene_;
   bool defined_ = true;
   std::vector<double> lowest_;  // e_min of each phase

@@ -30,6 +30,16 @@ struct RunOptions {
   bool progress = false;      // a progress line on stderr (only on a terminal)
   bool quiet = false;
   RunLimits limits;  // checked before anything is made (its outDir is set from outDir)
+  // A checkpoint (Checkpoint.hpp) to continue, of the scene given to runScene (from
+  // checkpointScene); empty: a run from the start.
+  std::string restart;
+  // > 0: the run stops after the first step at or past this simulated time [s] (the step is not
+  // shortened to it, so that a restart continues the uninterrupted run's steps), writes a
+  // checkpoint and ends with status interrupted (interrupted_by "stop_at") and exitDone.
+  double stopAt = 0.0;
+  // > 0: a checkpoint also after the first step that ends this many wall-clock minutes after the
+  // last one (or the start), besides the scene's output.checkpoint_interval.
+  double checkpointMinutes = 0.0;
 };
 
 // Throws SceneError where the scene passes the limits (checkMemory, checkDuration). Returns

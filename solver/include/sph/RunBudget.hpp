@@ -16,6 +16,8 @@ struct RunLimits {
   // The XDMF sidecar is rewritten whole at every snapshot (RunFile), so S snapshots write
   // ~(1.6 kB + 6 N) S^2 / 2 for N particles (its inline connectivity: XdmfSidecar.cpp): 80 GB
   // at 1e4 for a few particles. Beyond that a run spends its time rewriting it.
+  // The same bound for the checkpoints (output.checkpoint_interval), each a copy of the run file
+  // so far.
   double maxSnapshots = 1e4;
   std::string outDir = ".";  // the output's estimated size is compared with its free space
 };

@@ -59,6 +59,14 @@ class RunFile {
   // partial one. The file takes no more writes.
   void finish();
 
+  // The record so far (/series, /snapshots and /packing, those that exist) copied into the open
+  // HDF5 file `into` under the group `under` (a checkpoint: Checkpoint.cpp); failures throw
+  // OutputError naming `intoPath`. Buffered series values are not copied: append them first.
+  void copyRecordTo(std::int64_t into, const std::string& under, const std::string& intoPath);
+  // The record under `under` of the open HDF5 file `from` (a checkpoint) copied into this file,
+  // which continues it: its snapshots become this file's first, and its XDMF lists them.
+  void adoptRecord(std::int64_t from, const std::string& under);
+
   const std::string& path() const { return path_; }            // where finish() puts it
   const std::string& writingPath() const { return writing_; }  // <path>.partial until then
 

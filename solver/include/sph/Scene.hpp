@@ -95,6 +95,9 @@ struct Scene {
   double dtFloor = 0.0;           // a run fails when dt falls below (0: 1e-4 of the first dt)
   double snapshotInterval = 0.0;  // 0: first and last only
   int seriesEvery = 1;            // record the time series every n steps
+  // A checkpoint (Checkpoint.hpp) after the first step at or past every multiple of this
+  // simulated time [s]; 0: only where the run stops early (failure, signal, --stop-at).
+  double checkpointInterval = 0.0;
   std::vector<Probe> probes;
   std::vector<std::string> warnings;
 

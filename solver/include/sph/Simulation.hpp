@@ -100,6 +100,28 @@ class Simulation {
   const ForceEvaluation<D>& forces() const { return forces_; }
   std::vector<std::string> termNames() const;
 
+  // What a checkpoint keeps of the time loop besides the particles (in their stored order) and
+  // ids(): with these the next step reads what it would have read (Checkpoint.hpp).
+  struct Resumable {
+    std::vector<int> ids;
+    double time = 0, lastDt = 0, dtFloor = 0, reflectionDepth = 0, skin = 0;
+    TimeStepLimit limit = TimeStepLimit::acoustic;
+    long step = 0, evaluations = 0, reflections = 0, reusedLists = 0;
+    // The positions and h at the neighbour lists' build (empty: no lists kept).
+    LineVector<Vec<D>> listedAt;
+    LineVector<double> listedH;
+  };
+  Resumable resumable() const;
+  // Continues from a Resumable, on a simulation made from the checkpoint's particles, whose
+  // rates were `rates`. The neighbour lists are built again from the listed positions and h (the
+  // same halo, cells and pairs as then: nothing else sets them). With `verify` the state's rates
+  // are evaluated again with them (the step that wrote the state had moved it less than the skin
+  // from there, or listed it) and the result says whether they are `rates` to the bit; without
+  // (a state whose step then failed, which may have listed its trial state) `rates` are taken.
+  // Throws std::invalid_argument where r does not fit this simulation (another particle count).
+  bool resume(const Resumable& r, const Derivatives<D>& rates, bool verify);
+  const Derivatives<D>& currentRates() const { return f_; }
+
  private:
   using Integrator = integrators::PredictorCorrector;
   struct Stepper;  // what the integrator sees of a step (Simulation.cpp)

@@ -1,0 +1,266 @@
+// Issue 32, checkpoint and restart: a run stopped part way (--stop-at, SIGTERM, SIGKILL after a
+// checkpoint at the scene's cadence) and continued with `sph run --restart` writes a run file
+// whose every dataset and counter is bit-identical to the run that did not stop
+// (perf/compare_runs.py), and a checkpoint that is missing, damaged or not one is exit 2 with a
+// message naming it.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ProgramHelpers.hpp"
+
+namespace {
+
+using namespace sph::core_tests;
+namespace fs = std::filesystem;
+
+// perf/compare_runs.py A B: exit 0 and "N datasets bit-identical" where every dataset, the
+// physics attributes and the /metrics counters are equal to the bit.
+ProgramResult compareRuns(const std::string& a, const std::string& b) {
+  ProgramResult r;
+  const std::string command = std::string(SPH_PYTHON) + " '" + SPH_SOURCE_DIR +
+                              "/perf/compare_runs.py' '" + a + "' '" + b + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// The quick tier's dam break (validation/scenes/dam_break_dx0.025.toml, 200 particles) to 0.5 s:
+// the collapse and the surge's run along the floor, 2,200 steps, cell order renewed every 10 and
+// neighbour lists kept between builds, so that a stop falls between them.
+std::string shortDamBreak(const std::string& dir) {
+  std::string text =
+      readText(std::string(SPH_SOURCE_DIR) + "/validation/scenes/dam_break_dx0.025.toml");
+  const std::string from = "end_time = 1.3";
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos);
+  text.replace(at, from.size(), "end_time = 0.5");
+  const std::string path = dir + "/dam_break_short.toml";
+  writeText(path, text);
+  return path;
+}
+
+void expectSameRun(const std::string& reference, const std::string& restarted) {
+  const ProgramResult same = compareRuns(reference, restarted);
+  EXPECT_EQ(same.exitCode, 0) << same.output;
+  EXPECT_NE(same.output.find("datasets bit-identical"), std::string::npos) << same.output;
+}
+
+TEST(Restart, DamBreakStoppedHalfwayContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = shortDamBreak(out);
+  const std::string whole = out + "/whole", part = out + "/part";
+  const ProgramResult a =
+      runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --fixed-threads --quiet");
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  // Stopped on two threads, continued on one: the sums do not depend on the thread count.
+  const ProgramResult b =
+      runSph("run '" + scene + "' --out '" + part + "' --threads 2 --stop-at 0.25 --quiet");
+  ASSERT_EQ(b.exitCode, 0) << b.output;
+  const std::string checkpoint = part + "/dam_break_dx0.025.checkpoint.h5";
+  ASSERT_TRUE(fs::exists(checkpoint));
+  EXPECT_EQ(stringAttribute(part + "/dam_break_dx0.025.h5", "/", "interrupted_by"), "stop_at");
+  const double stoppedAt = *doubleAttribute(checkpoint, "/", "time");
+  EXPECT_GE(stoppedAt, 0.25);
+  EXPECT_LT(stoppedAt, 0.26);
+  const ProgramResult c = runSph("run --restart '" + checkpoint + "' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  const std::string restarted = part + "/dam_break_dx0.025.h5";
+  EXPECT_EQ(stringAttribute(restarted, "/", "status"), "stable");
+  EXPECT_EQ(doubleAttribute(restarted, "/", "restart_time"), stoppedAt);
+  EXPECT_FALSE(fs::exists(checkpoint)) << "a finished run removes its checkpoint";
+  expectSameRun(whole + "/dam_break_dx0.025.h5", restarted);
+}
+
+// The same in 3-D (CORE_SCENES/hydrostatic_box_3d.toml: 512 particles, 290 steps), whose
+// checkpoint stores 3-vectors and whose lists hold the ghosts of five walls.
+TEST(Restart, Box3dStoppedHalfwayContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = scenePath("hydrostatic_box_3d.toml");
+  const std::string whole = out + "/whole", part = out + "/part";
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + part + "' --threads 2 --stop-at 0.0277 --quiet")
+                .exitCode,
+            0);
+  const ProgramResult c =
+      runSph("run --restart '" + part + "/hydrostatic_box_3d.checkpoint.h5' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  expectSameRun(whole + "/hydrostatic_box_3d.h5", part + "/hydrostatic_box_3d.h5");
+}
+
+// A packed start (CORE_SCENES/packed_tank.toml): the restart takes the particles from the
+// checkpoint, packs nothing, and its run file keeps the packing history (/packing/block_0).
+TEST(Restart, PackedStartKeepsItsPackingHistory) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = scenePath("packed_tank.toml");
+  const std::string whole = out + "/whole", part = out + "/part";
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + part + "' --threads 2 --stop-at 0.011 --quiet")
+                .exitCode,
+            0);
+  const ProgramResult c =
+      runSph("run --restart '" + part + "/packed_tank.checkpoint.h5' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  EXPECT_EQ(c.output.find("packing"), std::string::npos) << "the restart packed again:\n"
+                                                         << c.output;
+  EXPECT_FALSE(readDoubles(part + "/packed_tank.h5", "/packing/block_0/kinetic").empty());
+  expectSameRun(whole + "/packed_tank.h5", part + "/packed_tank.h5");
+}
+
+// A continued run stopped again and continued again is the same run.
+TEST(Restart, RestartedRunStoppedAgainContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  const std::string scene = shortDamBreak(out);
+  const std::string whole = out + "/whole", part = out + "/part";
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 2 --quiet").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + part + "' --stop-at 0.1 --quiet").exitCode, 0);
+  const std::string checkpoint = part + "/dam_break_dx0.025.checkpoint.h5";
+  const ProgramResult again =
+      runSph("run --restart '" + checkpoint + "' --stop-at 0.3 --threads 1 --quiet");
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_GE(*doubleAttribute(checkpoint, "/", "time"), 0.3);
+  ASSERT_EQ(runSph("run --restart '" + checkpoint + "' --quiet").exitCode, 0);
+  expectSameRun(whole + "/dam_break_dx0.025.h5", part + "/dam_break_dx0.025.h5");
+}
+
+// The small tank with gravity to 2.5 s fails on energy growth at step 360 (t = 0.057 s): its
+// checkpoint holds the last good state, and the restart takes the failing step again and fails
+// the same way, with the same run file.
+TEST(Restart, FailureCheckpointFailsTheSameWay) {
+  const std::string scene = editedScene({{"end_time = 0.02", "end_time = 2.5"},
+                                         {"snapshot_interval = 0.01", "snapshot_interval = 0.02"}});
+  const fs::path dir = fs::path(scene).parent_path();
+  const std::string out = (dir / "out").string(), h5 = out + "/small_tank.h5";
+  const ProgramResult a = runSph("run '" + scene + "' --out '" + out + "' --threads 1 --quiet");
+  ASSERT_EQ(a.exitCode, 3) << a.output;
+  const std::string checkpoint = out + "/small_tank.checkpoint.h5";
+  EXPECT_EQ(integerAttribute(checkpoint, "/", "after_failure"), 1);
+  const std::string failed = (dir / "failed.h5").string();
+  fs::copy_file(h5, failed);
+  const ProgramResult b = runSph("run --restart '" + checkpoint + "' --threads 2 --quiet");
+  ASSERT_EQ(b.exitCode, 3) << b.output;
+  EXPECT_EQ(stringAttribute(h5, "/", "failure"), stringAttribute(failed, "/", "failure"));
+  expectSameRun(failed, h5);
+}
+
+// The small tank without gravity (RunOutputTest.cpp's long run: its hydrostatic start relaxes,
+// nothing fails) for 2.5 s, some 15,000 steps at about 6,600 a second: long enough to be stopped
+// by a signal part way. `interval` > 0 sets output.checkpoint_interval.
+std::string tankScene(double interval) {
+  return editedScene(
+      {{"end_time = 0.02", "end_time = 2.5"},
+       {"gravity = [0.0, -9.81]", "gravity = [0.0, 0.0]"},
+       {"snapshot_interval = 0.01",
+        "snapshot_interval = 0.5\ncheckpoint_interval = " + std::to_string(interval)}});
+}
+
+TEST(Restart, SigtermCheckpointIsRestartable) {
+  const std::string scene = tankScene(0.0);
+  const fs::path dir = fs::path(scene).parent_path();
+  const std::string whole = (dir / "whole").string(), part = (dir / "part").string();
+  const ProgramResult a = runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet");
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  const std::string log = (dir / "log.txt").string();
+  const int pid = startSph({"run", scene, "--out", part, "--threads", "1", "--quiet"}, log);
+  ASSERT_TRUE(waitForFile(part + "/small_tank.h5.partial", 60)) << readText(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  kill(pid, SIGTERM);
+  ASSERT_EQ(waitForSph(pid, 60), 128 + SIGTERM) << readText(log);
+  const std::string checkpoint = part + "/small_tank.checkpoint.h5";
+  EXPECT_NE(readText(log).find("sph run --restart " + checkpoint), std::string::npos)
+      << readText(log);
+  ASSERT_TRUE(fs::exists(checkpoint));
+  EXPECT_FALSE(fs::exists(checkpoint + ".partial"));
+  EXPECT_LT(*doubleAttribute(checkpoint, "/", "time"), 2.5);
+  const ProgramResult c = runSph("run --restart '" + checkpoint + "' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  expectSameRun(whole + "/small_tank.h5", part + "/small_tank.h5");
+}
+
+// Killed with no chance to write anything (SIGKILL), the run leaves the checkpoint of the
+// scene's cadence, whole: the restart from it continues the run as if nothing had happened.
+TEST(Restart, CheckpointAtTheScenesCadenceSurvivesSigkill) {
+  const std::string scene = tankScene(0.05);
+  const fs::path dir = fs::path(scene).parent_path();
+  const std::string whole = (dir / "whole").string(), part = (dir / "part").string();
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  const std::string log = (dir / "log.txt").string();
+  const std::string checkpoint = part + "/small_tank.checkpoint.h5";
+  const int pid = startSph({"run", scene, "--out", part, "--threads", "1", "--quiet"}, log);
+  ASSERT_TRUE(waitForFile(checkpoint, 60)) << readText(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  kill(pid, SIGKILL);
+  ASSERT_EQ(waitForSph(pid, 60), 128 + SIGKILL);
+  const double at = *doubleAttribute(checkpoint, "/", "time");
+  EXPECT_GT(at, 0.0);
+  EXPECT_LT(at, 2.5);
+  const ProgramResult c = runSph("run --restart '" + checkpoint + "' --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  expectSameRun(whole + "/small_tank.h5", part + "/small_tank.h5");
+}
+
+// A checkpoint of the small tank stopped at 0.01 s, for the damage below.
+std::string tankCheckpoint(const std::string& out) {
+  const ProgramResult r = runSph("run '" + scenePath("small_tank.toml") + "' --out '" + out +
+                                 "' --threads 1 --stop-at 0.01 --quiet");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  return out + "/small_tank.checkpoint.h5";
+}
+
+void expectRefused(const std::string& checkpoint, const std::string& says) {
+  const ProgramResult r = runSph("run --restart '" + checkpoint + "' --quiet");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(checkpoint), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+}
+
+TEST(Restart, MissingOrDamagedCheckpointIsBadInput) {
+  const std::string out = freshOutputDirectory();
+  expectRefused(out + "/none.checkpoint.h5", "no such file");
+  const std::string text = out + "/text.checkpoint.h5";
+  writeText(text, "not a checkpoint\n");
+  expectRefused(text, "not an HDF5 file, or damaged");
+
+  const std::string checkpoint = tankCheckpoint(out);
+  ASSERT_TRUE(fs::exists(checkpoint));
+  // A run file is HDF5 but not a checkpoint.
+  expectRefused(out + "/small_tank.h5", "not a checkpoint of sph run");
+  // Cut short (a copy of its first half, as a full disk or a killed copy would leave it).
+  const std::string bytes = readText(checkpoint);
+  const std::string cut = out + "/cut.checkpoint.h5";
+  writeText(cut, bytes.substr(0, bytes.size() / 2));
+  expectRefused(cut, "damaged");
+  // One density changed by one ulp: the rates evaluated again are not the stored ones.
+  const std::string edited = out + "/edited.checkpoint.h5";
+  fs::copy_file(checkpoint, edited);
+  {
+    const hid_t f = H5Fopen(edited.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t d = H5Dopen2(f, "/state/density", H5P_DEFAULT);
+    ASSERT_GE(d, 0);
+    std::vector<double> rho(100);
+    ASSERT_GE(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rho.data()), 0);
+    rho[37] = std::nextafter(rho[37], 2e3);
+    ASSERT_GE(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rho.data()), 0);
+    H5Dclose(d);
+    H5Fclose(f);
+  }
+  expectRefused(edited, "are not the ones it holds: it is damaged");
+  // A scene and --restart together, or neither.
+  const ProgramResult both =
+      runSph("run '" + scenePath("small_tank.toml") + "' --restart '" + checkpoint + "' --quiet");
+  EXPECT_EQ(both.exitCode, 2) << both.output;
+  EXPECT_NE(both.output.find("not both"), std::string::npos) << both.output;
+}
+
+}  // namespace
