@@ -54,13 +54,16 @@ def shortened(text):
 
 def mutate(text, rng):
     lines = text.split("\n")
-    for _ in range(rng.randint(1, 3)):
+    # Mostly one change, mostly to a number: the structural breaks (types, tables, truncated lines)
+    # are refused by the reader, which the libFuzzer target covers far faster; a run needs a scene
+    # that passes it (about 1 mutant in 4 with these weights, against 1 in 10 with uniform ones).
+    for _ in range(rng.choice([1, 1, 1, 2, 3])):
         candidates = [i for i, l in enumerate(lines) if l.strip() and not l.lstrip().startswith("#")]
         if not candidates:
             break
         i = rng.choice(candidates)
         line = lines[i]
-        op = rng.randrange(7)
+        op = rng.choices(range(7), weights=[3, 2, 6, 1, 1, 0.5, 0.5])[0]
         numbers = list(NUMBER.finditer(line.split("#")[0]))
         if op <= 2 and numbers:
             m = rng.choice(numbers)
