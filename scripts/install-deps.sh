@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this project needs, only those missing. Idempotent.
 #   install-deps.sh            build and test
-#   install-deps.sh --report   also Debian's chromium, which renders the V&V report in its nightly test,
-#                              and paraview, python3-paraview (pvpython) and xvfb (an X server for its
-#                              renderer), which open and draw the dam break in theirs (validation/paraview)
+#   install-deps.sh --report   also what the nightly tier needs: chromium (renders the V&V report),
+#                              paraview, python3-paraview and xvfb (pvpython opens and draws the dam break,
+#                              validation/paraview), clang with libFuzzer and its OpenMP headers (the fuzz
+#                              tier's scene-reader target, fuzz/CMakeLists.txt)
 set -euo pipefail
 packages=(g++ cmake make pkg-config libgtest-dev libeigen3-dev libhdf5-dev libgsl-dev libtomlplusplus-dev
   libcli11-dev libbenchmark-dev python3-numpy python3-h5py python3-matplotlib python3-pytest)
-[ "${1:-}" = "--report" ] && packages+=(chromium paraview python3-paraview xvfb)
+[ "${1:-}" = "--report" ] && packages+=(chromium paraview python3-paraview xvfb clang libclang-rt-14-dev libomp-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

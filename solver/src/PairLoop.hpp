@@ -325,8 +325,12 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
     w.scratch.resize(omp_get_max_threads());
   for (auto& view : w.scratch) {
-    for (int a = 0; a < D; ++a) view.x[a].resize(nPadded);
-    view.h.resize(nPadded), view.receives.resize(nPadded);
+    // Pass 1 reads whole vectors: a row's last one reads up to lanes - 1 entries past the row,
+    // which may lie in a band this thread never copies in. Their lanes are masked out, but x and
+    // h start as numbers where never written (memory not yet stored to may hold a NaN, whose
+    // comparison raises the invalid exception: the FPE-trapped tests trap it).
+    for (int a = 0; a < D; ++a) view.x[a].resize(nPadded, 0.0);
+    view.h.resize(nPadded, 0.0), view.receives.resize(nPadded);
     if constexpr (D > 2) {  // in 1-D and 2-D these fields are read from the records only
       for (int a = 0; a < D; ++a) view.v[a].resize(nPadded);
       view.rho.resize(nPadded), view.pOverRho2.resize(nPadded), view.m.resize(nPadded);

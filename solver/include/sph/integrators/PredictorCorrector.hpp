@@ -21,7 +21,7 @@ struct PredictorCorrector {
     const auto f = step.rates();
     const auto s = step.trial();  // y*
     step.move(
-        [=](std::int64_t i) {
+        [=](std::int64_t i) __attribute__((always_inline)) {
           s.r[i] = y.r[i] + dt * y.v[i];
           s.v[i] = y.v[i] + dt * f.dvdt[i];
           s.rho[i] = y.rho[i] + dt * f.drhodt[i];
