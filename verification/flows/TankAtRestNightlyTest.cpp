@@ -1,0 +1,67 @@
+// Issue 31 (nightly): the tank at rest of TankAtRest.hpp to t sqrt(g/H) = 100 with the named
+// model (the paper's terms with Fourtakas et al.'s density diffusion, delta 0.1), one ctest entry
+// a case. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars at aspects
+// 1:1 and 4:1 and H/dx 20 and 40. The paper's quadratic kernel and the cubic spline (h/dx 1.33)
+// do not at every case (measured with validation/stability/tank_at_rest_study.py, one thread
+// each, two at a time on a loaded 2-core machine):
+//   H/dx 20, 1:1: quadratic max|u| 2.1e-3 sqrt(gH), bottom 1.6 %; cubic 6.0e-3, 0.67 %
+//   H/dx 20, 4:1: quadratic 1.8e-2, 1.5 %; cubic 1.9e-2, 0.59 %
+// so their cases keep regression bounds of 2.5 times the measured values, and their figures in
+// the results. H/dx 80 (25,600 particles at 4:1 over 240,000 steps, some hours a case) is beyond
+// this tier.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "Results.hpp"
+#include "TankAtRest.hpp"
+
+namespace sph::verification::tank_at_rest {
+namespace {
+
+struct NightlyCase {
+  Case tank;
+  double speedBound, bottomBound;  // the bars, or the regression bounds above
+  const char* source;
+};
+
+const char* const bar = "issue 31's bar";
+const char* const regression = "finding: regression bound, 2.5 x the measured value";
+
+class TankAtRestNightly : public ::testing::TestWithParam<NightlyCase> {};
+
+TEST_P(TankAtRestNightly, HoldsStill) {
+  const NightlyCase& n = GetParam();
+  const Outcome o = run(n.tank, fourtakas);
+  const std::string what = "tank at rest, H/dx " + std::to_string(n.tank.cells) + ", " +
+                           std::to_string(int(n.tank.aspect)) + ":1, " + n.tank.kernel.name + ", " +
+                           fourtakas.name;
+  std::printf("%s: ran %d to %.1f, max|u|/sqrt(gH) %.3e, bottom %.3e, %.1f s\n", what.c_str(),
+              o.ran, o.stoppedAt, o.speed, o.bottom, o.seconds);
+  ASSERT_TRUE(o.ran) << what << ": " << o.why;
+  Results r;
+  EXPECT_TRUE(r.check(what + ": max|u| / sqrt(gH), second half of t sqrt(g/H) = 100", o.speed, "<",
+                      n.speedBound, n.source));
+  EXPECT_TRUE(r.check(what + ": max |p_bottom / (rho0 g H) - 1|, second half", o.bottom, "<",
+                      n.bottomBound, n.source));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, TankAtRestNightly,
+    ::testing::Values(NightlyCase{{1.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{4.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{1.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{1.0, 20, quadratic, 100.0}, 5.3e-3, 0.041, regression},
+                      NightlyCase{{4.0, 20, quadratic, 100.0}, 0.046, 0.038, regression},
+                      NightlyCase{{1.0, 20, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{
+                          {4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression}),
+    [](const ::testing::TestParamInfo<NightlyCase>& i) {
+      return i.param.tank.kernel.name + "_aspect" + std::to_string(int(i.param.tank.aspect)) +
+             "_cells" + std::to_string(i.param.tank.cells);
+    });
+
+}  // namespace
+}  // namespace sph::verification::tank_at_rest
