@@ -1,14 +1,15 @@
 // Issue 31 (nightly): the tank at rest of TankAtRest.hpp to t sqrt(g/H) = 100 with the named
 // model (the paper's terms with Fourtakas et al.'s density diffusion, delta 0.1), one ctest entry
-// a case. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars at aspects
-// 1:1 and 4:1 and H/dx 20 and 40. The paper's quadratic kernel and the cubic spline (h/dx 1.33)
-// do not at every case (measured with validation/stability/tank_at_rest_study.py, one thread
-// each, two at a time on a loaded 2-core machine):
+// a case. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars (measured
+// with validation/stability/tank_at_rest_study.py: max|u| 3.8e-3, 4.0e-3, 2.8e-3 sqrt(gH) and
+// bottom pressure 0.73, 0.73, 0.60 % at H/dx 20 1:1, 20 4:1, 40 1:1). The paper's quadratic
+// kernel and the cubic spline (h/dx 1.33) do not everywhere:
 //   H/dx 20, 1:1: quadratic max|u| 2.1e-3 sqrt(gH), bottom 1.6 %; cubic 6.0e-3, 0.67 %
-//   H/dx 20, 4:1: quadratic 1.8e-2, 1.5 %; cubic 1.9e-2, 0.59 %
-// so their cases keep regression bounds of 2.5 times the measured values, and their figures in
-// the results. H/dx 80 (25,600 particles at 4:1 over 240,000 steps, some hours a case) is beyond
-// this tier.
+//   H/dx 20, 4:1: quadratic 1.8e-2, 1.5 %;                       cubic 1.9e-2, 0.59 %
+//   H/dx 40, 1:1: quadratic 2.5e-3, 1.6 %;                       cubic 5.5e-3, 0.65 %
+// so where they fail a bar their cases keep regression bounds of 2.5 times the measured values.
+// Not here: 4:1 at H/dx 40 (6,400 particles over 120,000 steps, about an hour of one loaded
+// core) and H/dx 80 (4 to 16 times that).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -52,12 +53,13 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(NightlyCase{{1.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{{4.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{{1.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{{1.0, 20, quadratic, 100.0}, 5.3e-3, 0.041, regression},
                       NightlyCase{{4.0, 20, quadratic, 100.0}, 0.046, 0.038, regression},
+                      NightlyCase{{1.0, 40, quadratic, 100.0}, 6.2e-3, 0.040, regression},
                       NightlyCase{{1.0, 20, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{
-                          {4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression}),
+                          {4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression},
+                      NightlyCase{{1.0, 40, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar}),
     [](const ::testing::TestParamInfo<NightlyCase>& i) {
       return i.param.tank.kernel.name + "_aspect" + std::to_string(int(i.param.tank.aspect)) +
              "_cells" + std::to_string(i.param.tank.cells);
