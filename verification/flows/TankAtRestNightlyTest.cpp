@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 #include "Results.hpp"
@@ -26,6 +27,11 @@ struct NightlyCase {
   double speedBound, bottomBound;  // the bars, or the regression bounds above
   const char* source;
 };
+
+// The case's name for gtest (and so for ctest): its kernel, aspect and resolution, not its bytes.
+void PrintTo(const NightlyCase& n, std::ostream* out) {
+  *out << n.tank.kernel.name << " " << n.tank.aspect << ":1 H/dx " << n.tank.cells;
+}
 
 const char* const bar = "issue 31's bar";
 const char* const regression = "finding: regression bound, 2.5 x the measured value";
