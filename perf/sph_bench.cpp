@@ -372,19 +372,25 @@ int main(int argc, char** argv) {
     const double nf = static_cast<double>(b.set.nFluid);
     omp_set_num_threads(1);
     Json terms{"cost of each term combination (2e4 particles, 1 thread)",
-               "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 density "
-               "diffusion (Molteni & Colagrossi)",
+               "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 x density "
+               "diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al.)",
                "ns per particle evaluation",
                "",
                {}};
     std::vector<double> x, y;
     std::printf("\n%5s %-70s %12s %8s %10s\n", "menu", "terms (quadratic kernel)", "ns/particle",
                 "flops/p", "GFlop/s");
-    // delta 0.1 (Molteni & Colagrossi 2009) with the block's c0
-    const sph::terms::TermParameters parameters{
-        .beta = 1.0, .diffusionDelta = 0.1, .soundSpeed = b.phases[0].c0};
-    for (int t = 0; t < 16; ++t) {
-      sph::TermSwitches sw{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0, (t & 8) != 0};
+    // delta 0.1 (Molteni & Colagrossi 2009) with the block's c0 and EOS, g downwards
+    const sph::terms::TermParameters parameters{.beta = 1.0,
+                                                .diffusionDelta = 0.1,
+                                                .soundSpeed = b.phases[0].c0,
+                                                .rho0 = b.phases[0].rho0,
+                                                .bulkModulus = b.phases[0].bulkModulus(),
+                                                .gammaInteger = 7,
+                                                .g = {0.0, -9.81, 0.0}};
+    for (int t = 0; t < 24; ++t) {
+      sph::TermSwitches sw{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0,
+                           static_cast<sph::DensityDiffusion>(t / 8)};
       sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, sw, parameters);
       const double s = timePerCall([&] { force(b.set, b.out); });
       std::string label;

@@ -7,6 +7,8 @@
 #endif
 #include "sph/ForceEvaluation.hpp"
 
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "PairLoopMenu.hpp"
@@ -36,8 +38,13 @@ terms::Flops pairFlops(TermSwitches t) {
 }
 
 unsigned menuIndex(TermSwitches t) {
-  return unsigned(t.artificialViscosity) | unsigned(t.morrisViscosity) << 1 |
-         unsigned(t.variableH) << 2 | unsigned(t.densityDiffusion) << 3;
+  const unsigned optional = unsigned(t.artificialViscosity) | unsigned(t.morrisViscosity) << 1 |
+                            unsigned(t.variableH) << 2;
+  const auto form = static_cast<unsigned>(t.densityDiffusion);
+  if (form > terms::DensityDiffusionForms::size)
+    throw std::invalid_argument("menuIndex: density diffusion form " + std::to_string(form) +
+                                " is not one of the menu's");
+  return optional + terms::optionalSubsets * form;
 }
 
 template <int D>
@@ -51,7 +58,8 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms,
       terms_(terms),
       parameters_(parameters),
       work_(std::make_shared<Workspace>()) {
-  static_assert(terms::menuSize == 16, "menuIndex covers every optional term");
+  static_assert(terms::optionalSubsets == 8 && terms::DensityDiffusionForms::size == 2,
+                "menuIndex covers every optional term and every form");
   loop_ = pair_loop::menuLoop<D>(kernel, menuIndex(terms));
 }
 

@@ -264,6 +264,37 @@ KernelKind kernelKind(SceneTable& t, const std::string& v) {
   t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
 }
 
+// physics.density_diffusion (delta) and its form. Both forms diffuse density differences, and
+// across a phase interface the density jumps by the phases' rho0, so one phase only
+// (terms/DensityDiffusion*.hpp); Fourtakas et al.'s hydrostatic difference takes the secant of
+// x^gamma, a sum of gamma powers, so gamma must be a whole number.
+void readDensityDiffusion(SceneTable& physics, Scene& s) {
+  s.diffusionDelta = physics.nonNegative("density_diffusion", 0.0);
+  const std::string form = physics.string("density_diffusion_form", "molteni_colagrossi");
+  DensityDiffusion chosen = DensityDiffusion::molteniColagrossi;
+  if (form == "molteni_colagrossi")
+    chosen = DensityDiffusion::molteniColagrossi;
+  else if (form == "fourtakas")
+    chosen = DensityDiffusion::fourtakas;
+  else
+    physics.fail("density_diffusion_form",
+                 "unknown form '" + form + "' (expected molteni_colagrossi or fourtakas)");
+  s.terms.densityDiffusion = s.diffusionDelta > 0.0 ? chosen : DensityDiffusion::none;
+  if (s.terms.densityDiffusion == DensityDiffusion::none) return;
+  if (s.phases.size() > 1)
+    physics.fail(
+        "density_diffusion",
+        "density diffusion diffuses the density jump at a phase interface; the scene has " +
+            std::to_string(s.phases.size()) + " phases, it may have one");
+  const double gamma = s.phases[0].gamma;
+  if (chosen == DensityDiffusion::fourtakas &&
+      (gamma != std::floor(gamma) || gamma < 1.0 || gamma > 15.0))
+    physics.fail("density_diffusion_form",
+                 "\"fourtakas\" needs the phase's gamma a whole number from 1 to 15 (its "
+                 "hydrostatic density difference sums gamma powers), got " +
+                     SceneTable::fmt(gamma));
+}
+
 // The domain as "[l0, u0] x [l1, u1]".
 std::string fmtBox(const Scene& s) {
   std::string out;
@@ -418,7 +449,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
 
   SceneTable physics = top.sub("physics");
   physics.allow({"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h",
-                 "density_diffusion"});
+                 "density_diffusion", "density_diffusion_form"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
@@ -426,15 +457,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.terms.artificialViscosity = s.beta > 0.0;
   s.terms.morrisViscosity = physics.boolean("morris_viscosity", false);
   s.terms.variableH = physics.boolean("variable_h", false);
-  // Molteni & Colagrossi (2009): it diffuses density differences, and across a phase interface
-  // the density jumps by the phases' rho0, so one phase only (terms/DensityDiffusion*.hpp).
-  s.diffusionDelta = physics.nonNegative("density_diffusion", 0.0);
-  s.terms.densityDiffusion = s.diffusionDelta > 0.0;
-  if (s.terms.densityDiffusion && s.phases.size() > 1)
-    physics.fail("density_diffusion",
-                 "Molteni & Colagrossi's form diffuses the density jump at a phase interface; "
-                 "the scene has " +
-                     std::to_string(s.phases.size()) + " phases, it may have one");
+  readDensityDiffusion(physics, s);
   physics.rejectUnknown();
 
   SceneTable numerics = top.sub("numerics");

@@ -49,6 +49,31 @@ Boundaries<D> boundariesOf(const Scene& s) {
   }
   return b;
 }
+// A mirror ghost keeps its source's density (InteractionSet.hpp) while its hydrostatic pressure
+// is its source's plus rho g . (x_g - x): a ghost below the floor has the density of a particle
+// above it. Fourtakas et al.'s density diffusion (terms/DensityDiffusionFourtakas.hpp) reads that
+// as a density deficit below the floor, which drains the bottom layer (a tank at rest, H/dx 20,
+// Wendland: the bottom pressure 19 % low by t sqrt(g/H) = 20). With that form the ghost takes
+// the density of its pressure through the inverse Tait EOS (one phase), as the fluid has; the
+// paper's scenes, without it, keep the source's density.
+template <int D>
+void ghostDensitiesFromPressure(const Phase& water, InteractionSet<D>& set) {
+  for (std::size_t i = set.nFluid; i < set.size(); ++i)
+    set.rho[i] = TaitEquationOfState::density(set.p[i], water);
+}
+
+// The terms' parameters: density diffusion takes c0 (and, in Fourtakas et al.'s form, the
+// EOS and g) of the scene's one phase.
+terms::TermParameters termParametersOf(const Scene& scene) {
+  terms::TermParameters t{.beta = scene.beta, .diffusionDelta = scene.diffusionDelta};
+  if (scene.phases.empty()) return t;
+  const Phase& water = scene.phases[0];
+  t.soundSpeed = water.c0, t.rho0 = water.rho0, t.bulkModulus = water.bulkModulus();
+  t.gammaInteger = static_cast<int>(water.gamma);
+  for (std::size_t a = 0; a < scene.bodyAcceleration.size() && a < 3; ++a)
+    t.g[a] = scene.bodyAcceleration[a];
+  return t;
+}
 }  // namespace
 
 template <int D>
@@ -58,10 +83,7 @@ template <int D>
 Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
     : scene_(scene),
       bounds_(boundariesOf<D>(scene)),
-      forces_(scene.kernel, scene.terms,
-              {.beta = scene.beta,
-               .diffusionDelta = scene.diffusionDelta,
-               .soundSpeed = scene.phases.empty() ? 0.0 : scene.phases[0].c0}),
+      forces_(scene.kernel, scene.terms, termParametersOf(scene)),
       boundary_(makeBoundary<D>(scene, bounds_)),
       y_(std::move(initial)),
       skinFraction_(scene.neighbourSkin) {
@@ -143,6 +165,9 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   // Ghosts within the support plus the skin: those the kept lists may need.
   boundary_->build(state, scene_.phases, 2.0 * hMax + skin_,
                    reuse ? HaloMembers::same : HaloMembers::rescan, set_);
+  // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall particles)
+  if (scene_.hydrostaticGhosts && scene_.terms.densityDiffusion == DensityDiffusion::fourtakas)
+    ghostDensitiesFromPressure(scene_.phases[0], set_);
   forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
@@ -551,7 +576,7 @@ bool Simulation<D>::resume(const Resumable& r, const Derivatives<D>& rates, bool
   // The lists' build from the listed state: a rescan of the halo and the cell list of its
   // positions and h (the other fields set no list, no cell and no halo member).
   listedAt_.clear();
-  const bool skinned = skinFraction_ > 0 && !halo_;
+  const bool skinned = skinFraction_ > 0;  // as rates() decides it
   if (skinned && !r.listedAt.empty()) {
     Particles<D> listed = y_;
     listed.r = r.listedAt, listed.h = r.listedH;

@@ -22,7 +22,7 @@ namespace {
 
 constexpr double rho0 = 1000.0, c0 = 20.0, delta = 0.1;
 const sph::terms::TermParameters parameters{.diffusionDelta = delta, .soundSpeed = c0};
-const sph::TermSwitches diffusionOnly{.densityDiffusion = true};
+const sph::TermSwitches diffusionOnly{.densityDiffusion = sph::DensityDiffusion::molteniColagrossi};
 
 // A square lattice of n x n particles of spacing dx at rest (no halo), h = 1.33 dx, with
 // density rho(x, y).

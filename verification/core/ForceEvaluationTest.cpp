@@ -10,7 +10,10 @@
 //   . r_ij < 0 eq. (13) dh_i/dt = h_i/D sum_j m_j/rho_j v_ij . grad_i W_ij
 // with eta^2 = 0.01 h_ij^2 and W_ij = W(|r_ij|, h_ij); and the density diffusion of Molteni &
 // Colagrossi (2009, eq. 9-10), d rho_i/dt += delta h_ij c0 sum_j psi_ij . grad_i W_ij m_j/rho_j,
-// psi_ij = 2 (rho_j - rho_i) r_ji / (r_ij^2 + eta^2).
+// psi_ij = 2 (rho_j - rho_i) r_ji / (r_ij^2 + eta^2), and Fourtakas et al.'s (2019) form with
+// rho_j - rho_i less the hydrostatic difference -rho0^2 g . r_ij / (K S), S = sum_k x_j^k
+// x_i^(gamma-1-k), x = rho/rho0 (terms/DensityDiffusionFourtakas.hpp; S here by powers, there by
+// Horner).
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -68,17 +71,40 @@ struct Reference {
 };
 
 // The terms' parameters of every comparison: beta of the scenes; delta of Molteni & Colagrossi's
-// paper with the c0 of the heavier phase.
-const sph::terms::TermParameters parameters{.beta = 1.0, .diffusionDelta = 0.1, .soundSpeed = 30.0};
-constexpr int menuSize = 16;  // every subset of the four optional terms
+// paper with the c0 of the heavier phase; for Fourtakas et al.'s form the lighter phase's EOS and
+// a g with a part along every axis (each of r_ij's components enters).
+const sph::terms::TermParameters parameters{.beta = 1.0,
+                                            .diffusionDelta = 0.1,
+                                            .soundSpeed = 30.0,
+                                            .rho0 = phases[0].rho0,
+                                            .bulkModulus = phases[0].bulkModulus(),
+                                            .gammaInteger = 7,
+                                            .g = {0.7, -9.81, 0.4}};
+// Every subset of the three optional terms times each density diffusion form (none, Molteni &
+// Colagrossi, Fourtakas et al.): the menu of terms/Menu.hpp.
+constexpr int menuSize = 24;
 sph::TermSwitches switchesOf(int combo) {
-  return {(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0, (combo & 8) != 0};
+  return {(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0,
+          static_cast<sph::DensityDiffusion>(combo / 8)};
 }
 std::string describe(sph::TermSwitches t) {
   return " artificial=" + std::to_string(t.artificialViscosity) +
          " morris=" + std::to_string(t.morrisViscosity) +
          " variable_h=" + std::to_string(t.variableH) +
-         " diffusion=" + std::to_string(t.densityDiffusion);
+         " diffusion=" + std::to_string(static_cast<unsigned>(t.densityDiffusion));
+}
+
+// Fourtakas et al.'s hydrostatic density difference rho_ji^H of the pair, by powers.
+template <int D>
+double hydrostaticDifference(const sph::InteractionSet<D>& s, std::size_t i, std::size_t j,
+                             const sph::terms::TermParameters& par) {
+  const double xi = s.rho[i] / par.rho0, xj = s.rho[j] / par.rho0;
+  double S = 0.0;
+  for (int k = 0; k < par.gammaInteger; ++k)
+    S += std::pow(xj, k) * std::pow(xi, par.gammaInteger - 1 - k);
+  double gr = 0.0;
+  for (int a = 0; a < D; ++a) gr += par.g[a] * (s.x[i][a] - s.x[j][a]);
+  return -par.rho0 * par.rho0 * gr / (par.bulkModulus * S);
 }
 
 template <int D>
@@ -103,8 +129,11 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
       const double continuity = s.m[j] * vij.dot(gradW);
       drho += continuity;
       ref.scaleRho[i] += std::abs(continuity);
-      if (t.densityDiffusion) {
-        const sph::Vec<D> psi = 2.0 * (s.rho[j] - s.rho[i]) * (-rij) / (r * r + eta2);
+      if (t.densityDiffusion != sph::DensityDiffusion::none) {
+        const double hydrostatic = t.densityDiffusion == sph::DensityDiffusion::fourtakas
+                                       ? hydrostaticDifference<D>(s, i, j, par)
+                                       : 0.0;
+        const sph::Vec<D> psi = 2.0 * (s.rho[j] - s.rho[i] - hydrostatic) * (-rij) / (r * r + eta2);
         const double c =
             par.diffusionDelta * hij * par.soundSpeed * psi.dot(gradW) * s.m[j] / s.rho[j];
         drho += c;
@@ -188,7 +217,7 @@ void allCombinations(unsigned seed) {
     }
     results.check("max |code - O(N^2) reference| / sum|pair terms|, " +
                       std::string(sph::name(kind)) + ", D=" + std::to_string(D) +
-                      ", all 16 term combinations",
+                      ", all 24 term combinations",
                   worst, "<=", tolerance, "summation round-off bound (n u sum|x_k|, Higham 2002)");
   }
 }
@@ -252,7 +281,7 @@ void keptLists(unsigned seed) {
     EXPECT_LE(worst, tolerance) << what;
     EXPECT_GE(worstFar, 1e-3) << what;
     results.check("kept neighbour lists, moved within the skin: max error / sum|pair terms|, " +
-                      what + ", all 16 term combinations",
+                      what + ", all 24 term combinations",
                   worst, "<=", tolerance, "summation round-off bound, as the full build");
   }
 }
@@ -277,7 +306,7 @@ TEST(ForceEvaluation, KeptNeighbourListsMatchReference3D) {
 class ThreadCount : public ::testing::TestWithParam<int> {};
 TEST_P(ThreadCount, DoesNotChangeBits) {
   const auto set = randomSet<2>(13, GetParam());
-  const sph::TermSwitches all{true, true, true, true};
+  const sph::TermSwitches all{true, true, true, sph::DensityDiffusion::fourtakas};
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   sph::Derivatives<2> one;

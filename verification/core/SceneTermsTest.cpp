@@ -40,13 +40,56 @@ TEST(SceneTerms, DensityDiffusionIsRefusedWithTwoPhases) {
   const std::string dir = freshOutputDirectory();
   std::string text = readText(withPhysics("density_diffusion = 0.1", dir));
   text.replace(text.find("[[fluid]]"), 9,
-               "[[phase]]\nname = \"oil\"\nrho0 = 900.0\nc0 = 20.0\nmu = 1.0e-3\n\n[[fluid]]\nphase = \"water\"");
+               "[[phase]]\nname = \"oil\"\nrho0 = 900.0\nc0 = 20.0\nmu = "
+               "1.0e-3\n\n[[fluid]]\nphase = \"water\"");
   const std::string path = dir + "/two_phases.toml";
   writeText(path, text);
   const ProgramResult r = runSph("check '" + path + "'");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("'physics.density_diffusion'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("2 phases"), std::string::npos) << r.output;
+}
+
+// The form key picks Fourtakas et al.'s (2019) term: named in the run file, and a tank at rest
+// starting hydrostatic changes (the forms differ where the kernel is cut).
+TEST(SceneTerms, FourtakasFormRunsWhenTheSceneAsksForIt) {
+  const std::string dir = freshOutputDirectory();
+  writeText(dir + "/mc.toml", readText(withPhysics("density_diffusion = 0.1", dir)));
+  const std::string fourtakas =
+      withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"", dir);
+  ASSERT_EQ(runSph("run '" + fourtakas + "' --quiet --out '" + dir + "/f'").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + dir + "/mc.toml' --quiet --out '" + dir + "/mc'").exitCode, 0);
+  const std::string a = dir + "/f/small_tank.h5", b = dir + "/mc/small_tank.h5";
+  const auto terms = stringAttribute(a, "/", "terms");
+  ASSERT_TRUE(terms.has_value());
+  EXPECT_NE(terms->find("density_diffusion_fourtakas"), std::string::npos) << *terms;
+  EXPECT_EQ(terms->find("density_diffusion_molteni_colagrossi"), std::string::npos) << *terms;
+  EXPECT_EQ(stringAttribute(a, "/", "status"), "stable");
+  EXPECT_NE(readDoubles(a, "/series/rho_max"), readDoubles(b, "/series/rho_max"))
+      << "the form changed nothing";
+}
+
+TEST(SceneTerms, UnknownDensityDiffusionFormIsRefusedWithItsKey) {
+  const std::string dir = freshOutputDirectory();
+  const ProgramResult r = runSph(
+      "check '" +
+      withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"antuono\"", dir) + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("'physics.density_diffusion_form'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("antuono"), std::string::npos) << r.output;
+}
+
+TEST(SceneTerms, FourtakasFormNeedsAWholeGamma) {
+  const std::string dir = freshOutputDirectory();
+  std::string text =
+      readText(withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"", dir));
+  text.replace(text.find("mu = 1.0e-3"), 11, "mu = 1.0e-3\ngamma = 7.5");
+  const std::string path = dir + "/gamma.toml";
+  writeText(path, text);
+  const ProgramResult r = runSph("check '" + path + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("'physics.density_diffusion_form'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("7.5"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -16,12 +16,18 @@
 
 namespace sph {
 
-// The optional terms, in the order of terms::OptionalTerms.
+// The density diffusion slot's forms, in the order of terms::DensityDiffusionForms after none.
+enum class DensityDiffusion : unsigned {
+  none,
+  molteniColagrossi,  // Molteni & Colagrossi (2009)
+  fourtakas,          // Fourtakas et al. (2019): the hydrostatic part subtracted
+};
+// The optional terms, in the order of terms::OptionalTerms, and the slots' choices.
 struct TermSwitches {
   bool artificialViscosity = false;  // Lobovsky & Kren eq. (10)
   bool morrisViscosity = false;      // eq. (9)
   bool variableH = false;            // eq. (13)
-  bool densityDiffusion = false;     // Molteni & Colagrossi (2009)
+  DensityDiffusion densityDiffusion = DensityDiffusion::none;
 };
 // The menu entry of a choice of optional terms (bit k: the k-th).
 unsigned menuIndex(TermSwitches);

@@ -85,7 +85,7 @@ struct Scene {
   std::vector<double> bodyAcceleration;  // gravity plus any driving force, F/rho [m/s^2]
   TermSwitches terms;
   double beta = 0.0;            // artificial viscosity, eq. (10)
-  double diffusionDelta = 0.0;  // density diffusion, Molteni & Colagrossi (2009)
+  double diffusionDelta = 0.0;  // density diffusion delta (terms.densityDiffusion: its form)
   KernelKind kernel = KernelKind::quadratic;
   double dx = 0.0, hOverDx = 1.33;
   double cflAcoustic = 0.25, cflViscous = 0.125, cflForce = 0.25;  // Morris et al. 1997

@@ -1,12 +1,15 @@
 #pragma once
-// The model's terms: those every scene evaluates, and the optional ones a scene switches on.
-// The pair loop is built for every subset of the optional terms (ForceEvaluation.cpp makes the
-// menu from these lists), so a new term is its header and a place in a list here.
+// The model's terms: those every scene evaluates, the optional ones a scene switches on, and
+// the slots where a scene picks at most one of several forms of a term. The pair loop is built
+// for every subset of the optional terms times every choice in each slot (ForceEvaluation.cpp
+// makes the menu from these lists), so a new term is its header and a place in a list here; a
+// form added to a slot grows the menu by one subset's worth, a new optional term doubles it.
 #include <type_traits>
 
 #include "sph/terms/ArtificialViscosity.hpp"
 #include "sph/terms/BodyForce.hpp"
 #include "sph/terms/ContinuityEquation.hpp"
+#include "sph/terms/DensityDiffusionFourtakas.hpp"
 #include "sph/terms/DensityDiffusionMolteniColagrossi.hpp"
 #include "sph/terms/MorrisViscosity.hpp"
 #include "sph/terms/PressureGradient.hpp"
@@ -21,16 +24,20 @@ struct TermList {
 };
 
 using RequiredTerms = TermList<ContinuityEquation, PressureGradient, BodyForce>;
-// Bit k of a menu index switches on the k-th (TermSwitches follows this order).
-using OptionalTerms = TermList<ArtificialViscosity, MorrisViscosity, VariableSmoothingLength,
-                               DensityDiffusionMolteniColagrossi>;
+// Bit k of a menu index's optional part switches on the k-th (TermSwitches follows this order).
+using OptionalTerms = TermList<ArtificialViscosity, MorrisViscosity, VariableSmoothingLength>;
+// The density diffusion slot: none (0) or the form at 1, 2, ... (TermSwitches::DensityDiffusion).
+using DensityDiffusionForms =
+    TermList<DensityDiffusionMolteniColagrossi, DensityDiffusionFourtakas>;
+inline constexpr unsigned optionalSubsets = 1u << OptionalTerms::size;
 
 namespace detail {
+// The optional terms whose bits are set in Mask, appended to Chosen.
 template <unsigned Mask, class Chosen, class Rest>
 struct Pick;
 template <unsigned Mask, class... C>
 struct Pick<Mask, TermList<C...>, TermList<>> {
-  using type = TermSet<C...>;
+  using type = TermList<C...>;
 };
 template <unsigned Mask, class... C, class T, class... R>
 struct Pick<Mask, TermList<C...>, TermList<T, R...>> {
@@ -38,17 +45,36 @@ struct Pick<Mask, TermList<C...>, TermList<T, R...>> {
                              std::conditional_t<(Mask & 1) != 0, TermList<C..., T>, TermList<C...>>,
                              TermList<R...>>::type;
 };
-template <unsigned Mask, class Required>
-struct WithRequired;
-template <unsigned Mask, class... C>
-struct WithRequired<Mask, TermList<C...>> {
-  using type = typename Pick<Mask, TermList<C...>, OptionalTerms>::type;
+// A slot's form `Form` (0: none, k: the k-th of Forms) appended to Chosen.
+template <unsigned Form, class Chosen, class Forms>
+struct Choose;
+template <class... C, class Forms>
+struct Choose<0, TermList<C...>, Forms> {
+  using type = TermList<C...>;
+};
+template <unsigned Form, class... C, class F, class... R>
+requires(Form > 0) struct Choose<Form, TermList<C...>, TermList<F, R...>> {
+  using type = std::conditional_t<Form == 1, TermList<C..., F>,
+                                  typename Choose<Form - 1, TermList<C...>, TermList<R...>>::type>;
+};
+template <class List>
+struct SetOf;
+template <class... C>
+struct SetOf<TermList<C...>> {
+  using type = TermSet<C...>;
+};
+template <unsigned Index>
+struct Entry {
+  using optional = typename Pick<Index % optionalSubsets, RequiredTerms, OptionalTerms>::type;
+  using type = typename SetOf<
+      typename Choose<Index / optionalSubsets, optional, DensityDiffusionForms>::type>::type;
 };
 }  // namespace detail
 
-// The term set of menu entry `Mask`: the required terms, then the optional ones it switches on.
-template <unsigned Mask>
-using MenuEntry = typename detail::WithRequired<Mask, RequiredTerms>::type;
-inline constexpr unsigned menuSize = 1u << OptionalTerms::size;
+// The term set of menu entry `Index` = optional subset + optionalSubsets x diffusion form: the
+// required terms, then the optional ones the subset switches on, then the slot's form.
+template <unsigned Index>
+using MenuEntry = typename detail::Entry<Index>::type;
+inline constexpr unsigned menuSize = optionalSubsets * (1 + DensityDiffusionForms::size);
 
 }  // namespace sph::terms

@@ -83,6 +83,12 @@ struct TermParameters {
   double beta = 0.0;            // artificial viscosity, eq. (10)
   double diffusionDelta = 0.0;  // density diffusion's delta (Molteni & Colagrossi 2009)
   double soundSpeed = 0.0;      // c0 [m/s], of density diffusion
+  // The hydrostatic density difference of Fourtakas et al.'s (2019) density diffusion: the
+  // phase's Tait EOS (eq. 8: rho0, K = rho0 c0^2 / gamma, gamma an integer) and the uniform body
+  // acceleration g (zero beyond D).
+  double rho0 = 1000.0, bulkModulus = 1.0;
+  int gammaInteger = 7;
+  double g[3] = {0.0, 0.0, 0.0};
 };
 
 // A fluid particle's rates once all its pairs are summed, for the terms' finish steps: hSum is

@@ -1,0 +1,75 @@
+// Issue 31 (nightly): the tank at rest of TankAtRest.hpp to t sqrt(g/H) = 100 with the named
+// model (the paper's terms with Fourtakas et al.'s density diffusion, delta 0.1), one ctest entry
+// a case. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars (measured
+// with validation/stability/tank_at_rest_study.py: max|u| 3.8e-3, 4.0e-3, 2.8e-3 sqrt(gH) and
+// bottom pressure 0.73, 0.73, 0.60 % at H/dx 20 1:1, 20 4:1, 40 1:1). The paper's quadratic
+// kernel and the cubic spline (h/dx 1.33) do not everywhere:
+//   H/dx 20, 1:1: quadratic max|u| 2.1e-3 sqrt(gH), bottom 1.6 %; cubic 6.0e-3, 0.67 %
+//   H/dx 20, 4:1: quadratic 1.8e-2, 1.5 %;                       cubic 1.9e-2, 0.59 %
+//   H/dx 40, 1:1: quadratic 2.5e-3, 1.6 %;                       cubic 5.5e-3, 0.65 %
+// so where they fail a bar their cases keep regression bounds of 2.5 times the measured values.
+// Not here: 4:1 at H/dx 40 (6,400 particles over 120,000 steps, about an hour of one loaded
+// core) and H/dx 80 (4 to 16 times that).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <ostream>
+#include <string>
+
+#include "Results.hpp"
+#include "TankAtRest.hpp"
+
+namespace sph::verification::tank_at_rest {
+namespace {
+
+struct NightlyCase {
+  Case tank;
+  double speedBound, bottomBound;  // the bars, or the regression bounds above
+  const char* source;
+};
+
+// The case's name for gtest (and so for ctest): its kernel, aspect and resolution, not its bytes.
+void PrintTo(const NightlyCase& n, std::ostream* out) {
+  *out << n.tank.kernel.name << " " << n.tank.aspect << ":1 H/dx " << n.tank.cells;
+}
+
+const char* const bar = "issue 31's bar";
+const char* const regression = "finding: regression bound, 2.5 x the measured value";
+
+class TankAtRestNightly : public ::testing::TestWithParam<NightlyCase> {};
+
+TEST_P(TankAtRestNightly, HoldsStill) {
+  const NightlyCase& n = GetParam();
+  const Outcome o = run(n.tank, fourtakas);
+  const std::string what = "tank at rest, H/dx " + std::to_string(n.tank.cells) + ", " +
+                           std::to_string(int(n.tank.aspect)) + ":1, " + n.tank.kernel.name + ", " +
+                           fourtakas.name;
+  std::printf("%s: ran %d to %.1f, max|u|/sqrt(gH) %.3e, bottom %.3e, %.1f s\n", what.c_str(),
+              o.ran, o.stoppedAt, o.speed, o.bottom, o.seconds);
+  ASSERT_TRUE(o.ran) << what << ": " << o.why;
+  Results r;
+  EXPECT_TRUE(r.check(what + ": max|u| / sqrt(gH), second half of t sqrt(g/H) = 100", o.speed, "<",
+                      n.speedBound, n.source));
+  EXPECT_TRUE(r.check(what + ": max |p_bottom / (rho0 g H) - 1|, second half", o.bottom, "<",
+                      n.bottomBound, n.source));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, TankAtRestNightly,
+    ::testing::Values(NightlyCase{{1.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{4.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{1.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{1.0, 20, quadratic, 100.0}, 5.3e-3, 0.041, regression},
+                      NightlyCase{{4.0, 20, quadratic, 100.0}, 0.046, 0.038, regression},
+                      NightlyCase{{1.0, 40, quadratic, 100.0}, 6.2e-3, 0.040, regression},
+                      NightlyCase{{1.0, 20, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{
+                          {4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression},
+                      NightlyCase{{1.0, 40, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar}),
+    [](const ::testing::TestParamInfo<NightlyCase>& i) {
+      return i.param.tank.kernel.name + "_aspect" + std::to_string(int(i.param.tank.aspect)) +
+             "_cells" + std::to_string(i.param.tank.cells);
+    });
+
+}  // namespace
+}  // namespace sph::verification::tank_at_rest
