@@ -12,5 +12,9 @@ scripts/install-deps.sh
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j2
 start=$(date +%s)
-ctest --test-dir build/asan -L quick --output-on-failure -j2 "$@"
+# Not here: the two tests that cap the address space with `ulimit -v` (RunBudget.AddressSpaceLimitIsRefused,
+# OutOfMemoryHasItsOwnExitCode): ASan reserves terabytes of shadow memory at start and aborts under any such cap.
+# They run in the release tier (scripts/test.sh).
+ctest --test-dir build/asan -L quick --output-on-failure -j2 \
+  -E 'RunBudget\.(AddressSpaceLimitIsRefused|OutOfMemoryHasItsOwnExitCode)' "$@"
 echo "asan quick tier: $(( $(date +%s) - start )) s"
