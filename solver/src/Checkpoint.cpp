@@ -21,16 +21,6 @@ using hdf5::Handle;
 constexpr const char* format = "sph-checkpoint-1";
 
 // Writing: every failure an OutputError naming the file (Hdf5Checked.hpp).
-hid_t stringType(std::size_t length, const std::string& path) {
-  const hid_t t = H5Tcopy(H5T_C_S1);
-  if (t < 0) hdf5::fail(path, "a string type");
-  if (H5Tset_size(t, std::max<std::size_t>(length, 1)) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
-    H5Tclose(t);
-    hdf5::fail(path, "a string type");
-  }
-  return t;
-}
-
 void putAttribute(hid_t object, const std::string& name, hid_t type, const void* value,
                   const std::string& path) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, path, "a dataspace");
@@ -47,7 +37,7 @@ void putInteger(hid_t object, const std::string& name, std::int64_t value,
 }
 void putText(hid_t object, const std::string& name, const std::string& value,
              const std::string& path) {
-  Handle t(stringType(value.size(), path), H5Tclose, path, "a string type");
+  Handle t(hdf5::stringType(value.size(), path), H5Tclose, path, "a string type");
   putAttribute(object, name, t, value.c_str(), path);
 }
 
@@ -251,7 +241,7 @@ void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const Ru
     putInteger(root, "step", state.step, writing);
     putInteger(root, "after_failure", failedStep ? 1 : 0, writing);
     {
-      Handle t(stringType(scene.text.size(), writing), H5Tclose, writing, "a string type");
+      Handle t(hdf5::stringType(scene.text.size(), writing), H5Tclose, writing, "a string type");
       Handle space(H5Screate(H5S_SCALAR), H5Sclose, writing, "a dataspace");
       Handle d(H5Dcreate2(file, "/scene", t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                H5Dclose, writing, "creating /scene");

@@ -5,6 +5,7 @@
 // above ulimit -f "File too large"). Internal to the solver library.
 #include <hdf5.h>
 
+#include <algorithm>
 #include <string>
 
 #include "sph/RunFile.hpp"  // OutputError
@@ -58,5 +59,16 @@ class Handle {
   hid_t id_;
   herr_t (*close_)(hid_t);
 };
+
+// A UTF-8 string type of `length` bytes (at least 1, HDF5's minimum), for attributes and text.
+inline hid_t stringType(std::size_t length, const std::string& file) {
+  const hid_t t = H5Tcopy(H5T_C_S1);
+  if (t < 0) fail(file, "a string type");
+  if (H5Tset_size(t, std::max<std::size_t>(length, 1)) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
+    H5Tclose(t);
+    fail(file, "a string type");
+  }
+  return t;
+}
 
 }  // namespace sph::hdf5

@@ -55,16 +55,6 @@ void writeAttribute(hid_t object, const std::string& name, hid_t type, const voi
   check(H5Awrite(a, type, data), path, "writing attribute " + name);
 }
 
-hid_t stringType(std::size_t length, const std::string& path) {
-  const hid_t t = H5Tcopy(H5T_C_S1);
-  if (t < 0) hdf5::fail(path, "a string type");
-  if (H5Tset_size(t, std::max<std::size_t>(length, 1)) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0) {
-    H5Tclose(t);
-    hdf5::fail(path, "a string type");
-  }
-  return t;
-}
-
 template <class T>
 void writeArray(hid_t group, const std::string& name, hid_t type, const std::vector<T>& data,
                 std::size_t columns, const std::string& path) {
@@ -132,7 +122,7 @@ void RunFile::markFailed(const std::string& why) {
     Handle root(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose, writing_, "opening /");
     const std::string status = "output_error";
     for (const auto& [name, value] : {std::pair{"status", status}, std::pair{"failure", why}}) {
-      Handle t(stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
+      Handle t(hdf5::stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
       writeAttribute(root, name, t, value.c_str(), writing_);
     }
     check(H5Fflush(file_, H5F_SCOPE_GLOBAL), writing_, "flushing the run file");
@@ -203,7 +193,7 @@ void RunFile::ensureRoom(double bytes) {
 void RunFile::attribute(const std::string& name, const std::string& value,
                         const std::string& group) {
   guarded([&] {
-    Handle t(stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
+    Handle t(hdf5::stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
     Handle g(openGroup(file_, group, writing_), H5Gclose, writing_, "opening " + group);
     writeAttribute(g, name, t, value.c_str(), writing_);
   });
@@ -223,7 +213,7 @@ void RunFile::attribute(const std::string& name, std::int64_t value, const std::
 
 void RunFile::text(const std::string& dataset, const std::string& value) {
   guarded([&] {
-    Handle t(stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
+    Handle t(hdf5::stringType(value.size(), writing_), H5Tclose, writing_, "a string type");
     Handle space(H5Screate(H5S_SCALAR), H5Sclose, writing_, "a dataspace");
     Handle d(H5Dcreate2(file_, dataset.c_str(), t, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
              H5Dclose, writing_, "creating " + dataset);
@@ -255,7 +245,7 @@ hid_t seriesColumn(hid_t g, const SeriesColumn& c, hid_t type, const std::string
   if (d < 0) hdf5::fail(path, "creating " + where);
   try {
     for (const auto& [key, value] : c.text) {
-      Handle t(stringType(value.size(), path), H5Tclose, path, "a string type");
+      Handle t(hdf5::stringType(value.size(), path), H5Tclose, path, "a string type");
       writeAttribute(d, key, t, value.c_str(), path);
     }
     for (const auto& [key, value] : c.numbers)
