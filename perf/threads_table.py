@@ -1,6 +1,6 @@
 """The table of perf/threads_under_load.sh: for each load and scene, the median wall time on 1 and
-2 threads and their ratio, with the range of the ratios of the alternated pairs (run r on 2
-threads over run r on 1), against issue 37's bars: 2 threads at most 0.65 of one thread's time on
+2 threads and their ratio, with the range of the ratios of the alternated pairs (pair k: the 2-thread
+run over the 1-thread run), against issue 37's bars: 2 threads at most 0.65 of one thread's time on
 an idle machine, at most 1.1 with a busy process on one core or on both. The last column: the
 cores that work other than the benchmark's took while it ran (median and largest over the runs),
 for a machine shared with others is never quite idle."""

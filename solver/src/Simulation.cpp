@@ -165,7 +165,8 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   // Ghosts within the support plus the skin: those the kept lists may need.
   boundary_->build(state, scene_.phases, 2.0 * hMax + skin_,
                    reuse ? HaloMembers::same : HaloMembers::rescan, set_);
-  // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall particles)
+  // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall
+  // particles)
   if (scene_.hydrostaticGhosts && scene_.terms.densityDiffusion == DensityDiffusion::fourtakas)
     ghostDensitiesFromPressure(scene_.phases[0], set_);
   forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)

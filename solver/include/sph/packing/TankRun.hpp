@@ -17,8 +17,8 @@
 #include <optional>
 
 #include "sph/FixedWalls.hpp"
-#include "sph/boundaries/WallParticles.hpp"
 #include "sph/Simulation.hpp"
+#include "sph/boundaries/WallParticles.hpp"
 #include "sph/packing/PackingScene.hpp"
 
 namespace sph::packing {
