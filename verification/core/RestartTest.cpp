@@ -154,8 +154,8 @@ TEST(Restart, FailureCheckpointFailsTheSameWay) {
 }
 
 // The small tank without gravity (RunOutputTest.cpp's long run: its hydrostatic start relaxes,
-// nothing fails) for 2.5 s, some 15,000 steps at about 6,600 a second: long enough to be stopped
-// by a signal part way. `interval` > 0 sets output.checkpoint_interval.
+// nothing fails) for 2.5 s, some 15,000 steps: 0.3-0.5 s of a quiet machine, several seconds of a
+// loaded one. `interval` > 0 sets output.checkpoint_interval.
 std::string tankScene(double interval) {
   return editedScene(
       {{"end_time = 0.02", "end_time = 2.5"},
@@ -164,16 +164,24 @@ std::string tankScene(double interval) {
         "snapshot_interval = 0.5\ncheckpoint_interval = " + std::to_string(interval)}});
 }
 
+// The uninterrupted run's wall time, from which a signal's delay is taken so that it lands part way
+// on a fast machine as on a slow one (a fixed 400 ms outlasted the whole run on CI's machine).
+double timedRun(const std::string& scene, const std::string& out) {
+  const auto start = std::chrono::steady_clock::now();
+  const ProgramResult r = runSph("run '" + scene + "' --out '" + out + "' --threads 1 --quiet");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 TEST(Restart, SigtermCheckpointIsRestartable) {
   const std::string scene = tankScene(0.0);
   const fs::path dir = fs::path(scene).parent_path();
   const std::string whole = (dir / "whole").string(), part = (dir / "part").string();
-  const ProgramResult a = runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet");
-  ASSERT_EQ(a.exitCode, 0) << a.output;
+  const double wall = timedRun(scene, whole);
   const std::string log = (dir / "log.txt").string();
   const int pid = startSph({"run", scene, "--out", part, "--threads", "1", "--quiet"}, log);
   ASSERT_TRUE(waitForFile(part + "/small_tank.h5.partial", 60)) << readText(log);
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  std::this_thread::sleep_for(std::chrono::duration<double>(0.3 * wall));
   kill(pid, SIGTERM);
   ASSERT_EQ(waitForSph(pid, 60), 128 + SIGTERM) << readText(log);
   const std::string checkpoint = part + "/small_tank.checkpoint.h5";
@@ -193,12 +201,12 @@ TEST(Restart, CheckpointAtTheScenesCadenceSurvivesSigkill) {
   const std::string scene = tankScene(0.05);
   const fs::path dir = fs::path(scene).parent_path();
   const std::string whole = (dir / "whole").string(), part = (dir / "part").string();
-  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  const double wall = timedRun(scene, whole);
   const std::string log = (dir / "log.txt").string();
   const std::string checkpoint = part + "/small_tank.checkpoint.h5";
   const int pid = startSph({"run", scene, "--out", part, "--threads", "1", "--quiet"}, log);
   ASSERT_TRUE(waitForFile(checkpoint, 60)) << readText(log);
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  std::this_thread::sleep_for(std::chrono::duration<double>(0.25 * wall));
   kill(pid, SIGKILL);
   ASSERT_EQ(waitForSph(pid, 60), 128 + SIGKILL);
   const double at = *doubleAttribute(checkpoint, "/", "time");
