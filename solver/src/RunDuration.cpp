@@ -144,7 +144,7 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
     m << "'output.snapshot_interval': a snapshot every " << s.snapshotInterval << " s to "
       << "'numerics.end_time' = " << s.endTime << " s makes about " << e.snapshots
       << " snapshots, more than " << limits.maxSnapshots
-      << " (the XDMF sidecar is rewritten at each: RunBudget.hpp)";
+      << " (RunBudget.hpp: a guard against an interval typed too small)";
     throw SceneError(m.str());
   }
   // A checkpoint copies the run file so far (Checkpoint.hpp): C of them write ~C/2 run files.

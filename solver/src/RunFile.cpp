@@ -159,7 +159,7 @@ double RunFile::room(std::string& limit) const {
     room = static_cast<double>(v.f_bavail) * static_cast<double>(v.f_frsize);
     limit = "free on its file system";
   }
-  // ulimit -f applies to each file: the HDF5 file, and the XDMF sidecar, rewritten whole with
+  // ulimit -f applies to each file: the HDF5 file, and the XDMF sidecar, which grows by
   // some 1.7 kB a snapshot.
   rlimit fsize{};
   if (getrlimit(RLIMIT_FSIZE, &fsize) == 0 && fsize.rlim_cur != RLIM_INFINITY) {
@@ -320,9 +320,15 @@ void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, 
   });
   flush();
   snapshots_.push_back({name, time, f.density.size()});
+  const std::string xdmf = xdmfOf(path_) + ".partial";
+  if (snapshots_.size() > 1 && xdmfWritten_) {
+    guarded([&] { appendXdmf(xdmf, writing_, {name, time, f.density.size()}); });
+    return;
+  }
   std::vector<XdmfSnapshot> entries;
   for (const Entry& s : snapshots_) entries.push_back({s.group, s.time, s.n});
-  guarded([&] { writeXdmf(xdmfOf(path_) + ".partial", writing_, entries); });
+  guarded([&] { writeXdmf(xdmf, writing_, entries); });
+  xdmfWritten_ = true;
 }
 
 namespace {
@@ -382,6 +388,7 @@ void RunFile::adoptRecord(std::int64_t from, const std::string& under) {
   std::vector<XdmfSnapshot> entries;
   for (const Entry& s : snapshots_) entries.push_back({s.group, s.time, s.n});
   guarded([&] { writeXdmf(xdmfOf(path_) + ".partial", writing_, entries); });
+  xdmfWritten_ = true;
 }
 
 void RunFile::flush() {

@@ -20,4 +20,10 @@ struct XdmfSnapshot {
 void writeXdmf(const std::string& xdmf, const std::string& h5,
                const std::vector<XdmfSnapshot>& snapshots);
 
+// Adds one snapshot to the sidecar `xdmf` that writeXdmf wrote, in place over its closing lines,
+// so that a run's sidecar costs its size once and not at every snapshot (rewritten whole, a run of
+// S snapshots wrote S^2/2 grids). A write that fails leaves the sidecar whole as it was and throws
+// OutputError naming the path.
+void appendXdmf(const std::string& xdmf, const std::string& h5, const XdmfSnapshot& snapshot);
+
 }  // namespace sph

@@ -13,11 +13,10 @@ namespace sph {
 struct RunLimits {
   double maxMemory = 0.0;  // bytes; 0: what the machine has available now (availableMemory)
   double maxSteps = 1e9;   // a year at 30 steps a second, far beyond any run of this solver
-  // The XDMF sidecar is rewritten whole at every snapshot (RunFile), so S snapshots write
-  // ~(1.6 kB + 6 N) S^2 / 2 for N particles (its inline connectivity: XdmfSidecar.cpp): 80 GB
-  // at 1e4 for a few particles. Beyond that a run spends its time rewriting it.
-  // The same bound for the checkpoints (output.checkpoint_interval), each a copy of the run file
-  // so far.
+  // A guard against an interval typed too small (1e-300 wrote a snapshot every step): 1e4
+  // snapshots are 100 a second of a 100 s run. The output's size is checked apart (outDir). The
+  // same bound for the checkpoints (output.checkpoint_interval), each a copy of the run file so
+  // far, so that C of them write about C/2 run files.
   double maxSnapshots = 1e4;
   std::string outDir = ".";  // the output's estimated size is compared with its free space
 };

@@ -89,6 +89,7 @@ class RunFile {
     std::size_t n;
   };
   std::vector<Entry> snapshots_;
+  bool xdmfWritten_ = false;  // the partial sidecar holds snapshots_ (appended to from then on)
 };
 
 }  // namespace sph
