@@ -145,3 +145,19 @@ def test_resubmit_takes_only_the_failed_and_the_missing_runs(tmp_path):
 def test_resubmit_without_a_first_submission_is_bad_input(tmp_path):
     done = submit("--out", tmp_path, "--resubmit")
     assert done.returncode == 2 and "selection.json not found" in done.stderr
+
+
+def test_a_runs_args_and_outputs_reach_sph_and_the_row(tmp_path):
+    m = write(tmp_path, f'base = "{ROOT / "validation"}"\n[[run]]\nscene = "scenes/martin_moyce_a10.toml"\n'
+                        'tier = "nightly"\ntimeout_s = 9\nthreads = 3\nargs = ["--fixed-threads"]\n'
+                        'outputs = ["martin_moyce_a10.h5"]\n')
+    sph = fake_sph(tmp_path, 'echo "$@" > "$(dirname "$0")/args"; exit 4')
+    done = subprocess.run([sys.executable, str(HERE.parent / "run.py"), "--matrix", str(m), "--name",
+                           "martin_moyce_a10", "--sph", str(sph), "--runs", str(tmp_path / "runs"), "--rows",
+                           str(tmp_path / "rows")], capture_output=True, text=True,
+                          env={k: v for k, v in os.environ.items() if not k.startswith("SLURM_")})
+    assert done.returncode == 4
+    args = (tmp_path / "args").read_text()
+    assert f"--out {tmp_path / 'runs' / 'nightly'} --threads 3 --quiet --fixed-threads" in args
+    row = json.loads((tmp_path / "rows" / "martin_moyce_a10.json").read_text())
+    assert row["missing_outputs"] == ["martin_moyce_a10.h5"] and row["tier"] == "nightly"
