@@ -17,7 +17,7 @@ fi
 if [ "$tier" = "quick" ]; then scripts/install-deps.sh || exit 1; else scripts/install-deps.sh --report || exit 1; fi
 scripts/build.sh || exit 1
 build=build/release
-rm -rf "$build/runs" "$build/results" "$build/stability" "$build/paraview"
+rm -rf "$build/runs" "$build/matrix-rows" "$build/results" "$build/stability" "$build/paraview"
 start=$(date +%s)
 ctest --test-dir "$build" -L "$tier" --output-on-failure -j2 --output-junit ctest-junit.xml
 tests=$?
