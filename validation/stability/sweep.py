@@ -181,7 +181,11 @@ def semi_axis_error(x, volume, ode_axes):
 
 def run_point(sph, template, params, workdir, drop_tool=None):
     p = dict(BASE, **params)
-    name = template + "_" + "_".join(f"{k}{v}" for k, v in sorted(params.items()) if k != "packing")
+    # Short words where the full ones would pass the 100 characters a scene name may have.
+    short = {"integrator": "", "end_time": "T", "h_over_dx": "hdx", "predictor_corrector": "pc",
+             "position_verlet": "pv"}
+    name = template + "_" + "_".join(f"{short.get(k, k)}{short.get(v, v) if isinstance(v, str) else v}"
+                                     for k, v in sorted(params.items()) if k != "packing")
     p["name"] = name
     scene = Path(workdir) / f"{name}.toml"
     scene.write_text((HERE / f"{template}.toml.in").read_text().format(**p))
