@@ -13,8 +13,10 @@ import sys
 import h5py
 import numpy as np
 
-PHYSICS_ATTRIBUTES = ("dimension", "gravity", "rho0", "kernel", "terms", "status", "failure_cause",
-                      "failure")
+PHYSICS_ATTRIBUTES = ("dimension", "gravity", "rho0", "kernel", "integrator", "terms", "status",
+                      "failure_cause", "failure")
+# What a run file written before the attribute existed ran.
+DEFAULTS = {"integrator": b"predictor_corrector"}
 TIMING_METRICS = ("wall_time_s", "particle_evaluations_per_s", "steps_on_all_threads")
 
 
@@ -27,8 +29,9 @@ def datasets(f):
 def main(a_path, b_path):
     with h5py.File(a_path, "r") as a, h5py.File(b_path, "r") as b:
         for key in PHYSICS_ATTRIBUTES:
-            if (key in a.attrs) != (key in b.attrs) or (key in a.attrs and np.any(a.attrs[key] != b.attrs[key])):
-                sys.exit(f"root attribute {key}: {a.attrs.get(key)!r} != {b.attrs.get(key)!r}")
+            x, y = a.attrs.get(key, DEFAULTS.get(key)), b.attrs.get(key, DEFAULTS.get(key))
+            if (x is None) != (y is None) or (x is not None and np.any(x != y)):
+                sys.exit(f"root attribute {key}: {x!r} != {y!r}")
         for key in set(a["metrics"].attrs) | set(b["metrics"].attrs):
             if key in TIMING_METRICS:
                 continue

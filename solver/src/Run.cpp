@@ -185,6 +185,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("gravity", std::sqrt(g));
   file.attribute("rho0", scene.phases[0].rho0);
   file.attribute("kernel", std::string(name(scene.kernel)));
+  file.attribute("integrator", std::string(name(scene.integrator)));
   file.attribute("terms", join(sim.termNames()));
   file.attribute("boundary_model", std::string(sim.boundary().name()));
   file.attribute("status", std::string("running"));

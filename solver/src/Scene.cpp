@@ -29,6 +29,17 @@ std::string_view name(KernelKind k) {
                          " is not a kernel this build knows");
 }
 
+std::string_view name(TimeIntegrator i) {
+  switch (i) {
+    case TimeIntegrator::predictor_corrector:
+      return "predictor_corrector";
+    case TimeIntegrator::position_verlet:
+      return "position_verlet";
+  }
+  throw std::logic_error("name: TimeIntegrator " + std::to_string(static_cast<int>(i)) +
+                         " is not an integrator this build knows");
+}
+
 std::string_view name(FaceKind k) {
   switch (k) {
     case FaceKind::open:
@@ -264,6 +275,13 @@ KernelKind kernelKind(SceneTable& t, const std::string& v) {
   t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
 }
 
+TimeIntegrator integratorKind(SceneTable& t, const std::string& v) {
+  for (TimeIntegrator i : {TimeIntegrator::predictor_corrector, TimeIntegrator::position_verlet})
+    if (v == name(i)) return i;
+  t.fail("integrator",
+         "unknown integrator '" + v + "' (expected predictor_corrector or position_verlet)");
+}
+
 // physics.density_diffusion (delta) and its form. Both forms diffuse density differences, and
 // across a phase interface the density jumps by the phases' rho0, so one phase only
 // (terms/DensityDiffusion*.hpp); Fourtakas et al.'s hydrostatic difference takes the secant of
@@ -462,7 +480,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
 
   SceneTable numerics = top.sub("numerics");
   numerics.allow({"kernel", "dx", "h_over_dx", "cfl_acoustic", "cfl_viscous", "cfl_force",
-                  "end_time", "density_band", "dt_floor", "neighbour_skin"});
+                  "end_time", "density_band", "dt_floor", "neighbour_skin", "integrator"});
   s.kernel = kernelKind(numerics, numerics.string("kernel", "quadratic"));
   s.dx = numerics.positive("dx");
   s.hOverDx = numerics.positive("h_over_dx", 1.33);
@@ -479,6 +497,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.cflAcoustic = numerics.positive("cfl_acoustic", 0.25);
   s.cflViscous = numerics.positive("cfl_viscous", 0.125);
   s.cflForce = numerics.positive("cfl_force", 0.25);
+  s.integrator = integratorKind(numerics, numerics.string("integrator", "predictor_corrector"));
   s.endTime = numerics.positive("end_time");
   const auto band = numerics.vector("density_band", 2, std::vector<double>{0.8, 1.2});
   if (!(band[0] > 0 && band[0] < 1 && band[1] > 1))

@@ -12,6 +12,8 @@
 #include "sph/EquationOfState.hpp"
 #include "sph/InitialParticles.hpp"
 #include "sph/Parallel.hpp"
+#include "sph/integrators/PositionVerlet.hpp"
+#include "sph/integrators/PredictorCorrector.hpp"
 
 namespace sph {
 
@@ -87,6 +89,17 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
       boundary_(makeBoundary<D>(scene, bounds_)),
       y_(std::move(initial)),
       skinFraction_(scene.neighbourSkin) {
+  // The scene's word for each (name(TimeIntegrator), Scene.cpp) is the integrator's own.
+  static_assert(integrators::PositionVerlet::name == "position_verlet" &&
+                integrators::PredictorCorrector::name == "predictor_corrector");
+  switch (scene.integrator) {
+    case TimeIntegrator::predictor_corrector:
+      advance_ = &Simulation::advanceWith<integrators::PredictorCorrector>;
+      break;
+    case TimeIntegrator::position_verlet:
+      advance_ = &Simulation::advanceWith<integrators::PositionVerlet>;
+      break;
+  }
   id_.resize(y_.size());
   std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)
@@ -498,7 +511,8 @@ struct Simulation<D>::Stepper {
 };
 
 template <int D>
-std::optional<Failure> Simulation<D>::advance(double dtMax) {
+template <class Integrator>
+std::optional<Failure> Simulation<D>::advanceWith(double dtMax) {
   prepare();
   TimeStepLimit limit;
   int limiting = -1;

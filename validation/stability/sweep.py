@@ -47,7 +47,10 @@ from runfile import read_run  # noqa: E402  (the one run-file reader)
 KERNELS = ["quadratic", "cubic_spline", "wendland_c2"]
 # The paper's dam break: c0 = 24.4 m/s, beta = 1, h = 1.33 dx, CFL 0.25 (Morris et al. 1997).
 BASE = dict(c0=24.4, beta=1.0, variable_h="true", kernel="quadratic", dx=0.02, h_over_dx=1.33,
-            cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0, initial="lattice", packing="")
+            cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0, initial="lattice", packing="",
+            integrator="predictor_corrector", delta=0.0)
+# The time integrators (solver/SCENES.md, [numerics] integrator): the paper's first.
+INTEGRATORS = ["predictor_corrector", "position_verlet"]
 
 
 def template_scene(template: str, **params) -> dict:
@@ -84,6 +87,23 @@ def sweeps():
         "hydrostatic_tank", "acoustic CFL factor, tank at rest to 4 s", "kernel",
         [(c, k, dict(cfl=c, kernel=kern, end_time=4.0)) for c in (0.1, 0.15, 0.2, 0.25)
          for k, kern in enumerate(KERNELS)], KERNELS)
+    # Each integrator with each kernel (issue 31): the acoustic CFL at which each stops working.
+    pairs = [(i, k) for i in INTEGRATORS for k in KERNELS]
+    labels = [f"{i}, {k}" for i, k in pairs]
+    out["cfl_acoustic_integrators_dam_break"] = (
+        "dam_break", "acoustic CFL factor (Morris 1997: 0.25)", "integrator, kernel",
+        [(c, y, dict(cfl=c, integrator=i, kernel=k)) for c in cfls for y, (i, k) in enumerate(pairs)], labels)
+    out["cfl_acoustic_integrators_long_hydrostatic_tank"] = (
+        "hydrostatic_tank", "acoustic CFL factor, tank at rest to 4 s", "integrator, kernel",
+        [(c, y, dict(cfl=c, integrator=i, kernel=k, end_time=4.0)) for c in (0.1, 0.15, 0.2, 0.25, 0.4)
+         for y, (i, k) in enumerate(pairs)], labels)
+    # CFL x density diffusion (Molteni & Colagrossi 2009 delta) for each integrator, Wendland C2 at h/dx 2.
+    deltas = [0.0, 0.05, 0.1, 0.2]
+    for integ in INTEGRATORS:
+        out[f"cfl_delta_{integ}_long_hydrostatic_tank"] = (
+            "hydrostatic_tank", f"acoustic CFL factor, tank at rest to 4 s, {integ}", "density diffusion delta",
+            [(c, y, dict(cfl=c, delta=d, integrator=integ, kernel="wendland_c2", h_over_dx=2.0, end_time=4.0))
+             for c in (0.1, 0.2, 0.25, 0.4, 0.6) for y, d in enumerate(deltas)], [str(d) for d in deltas])
     betas = [0.0, 0.1, 0.25, 0.5, 1.0, 1.5, 2.0]
     out["beta_dam_break"] = ("dam_break", "artificial viscosity beta (paper: 1)", "kernel",
                              [(b, k, dict(beta=b, kernel=kern)) for b in betas for k, kern in enumerate(KERNELS)],
@@ -161,7 +181,11 @@ def semi_axis_error(x, volume, ode_axes):
 
 def run_point(sph, template, params, workdir, drop_tool=None):
     p = dict(BASE, **params)
-    name = template + "_" + "_".join(f"{k}{v}" for k, v in sorted(params.items()) if k != "packing")
+    # Short words where the full ones would pass the 100 characters a scene name may have.
+    short = {"integrator": "", "end_time": "T", "h_over_dx": "hdx", "predictor_corrector": "pc",
+             "position_verlet": "pv"}
+    name = template + "_" + "_".join(f"{short.get(k, k)}{short.get(v, v) if isinstance(v, str) else v}"
+                                     for k, v in sorted(params.items()) if k != "packing")
     p["name"] = name
     scene = Path(workdir) / f"{name}.toml"
     scene.write_text((HERE / f"{template}.toml.in").read_text().format(**p))

@@ -91,6 +91,11 @@ TEST(BadInput, UnknownKernel) {
                  "unknown kernel 'gaussian'");
 }
 
+TEST(BadInput, UnknownIntegrator) {
+  expectRejected("kernel = \"quadratic\"", "kernel = \"quadratic\"\nintegrator = \"leapfrog\"",
+                 "numerics.integrator", "unknown integrator 'leapfrog'");
+}
+
 TEST(BadInput, NonIntegerDimension) {
   expectRejected("dimension = 2\n", "dimension = 2.5\n", "dimension", "must be 1, 2 or 3");
 }

@@ -38,13 +38,16 @@ ProgramResult compareRuns(const std::string& a, const std::string& b) {
 // The quick tier's dam break (validation/scenes/dam_break_dx0.025.toml, 200 particles) to 0.5 s:
 // the collapse and the surge's run along the floor, 2,200 steps, cell order renewed every 10 and
 // neighbour lists kept between builds, so that a stop falls between them.
-std::string shortDamBreak(const std::string& dir) {
+// With `integrator` set, numerics.integrator names it.
+std::string shortDamBreak(const std::string& dir, const std::string& integrator = "") {
   std::string text =
       readText(std::string(SPH_SOURCE_DIR) + "/validation/scenes/dam_break_dx0.025.toml");
   const std::string from = "end_time = 1.3";
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos);
-  text.replace(at, from.size(), "end_time = 0.5");
+  text.replace(
+      at, from.size(),
+      "end_time = 0.5" + (integrator.empty() ? "" : "\nintegrator = \"" + integrator + "\""));
   const std::string path = dir + "/dam_break_short.toml";
   writeText(path, text);
   return path;
@@ -56,9 +59,9 @@ void expectSameRun(const std::string& reference, const std::string& restarted) {
   EXPECT_NE(same.output.find("datasets bit-identical"), std::string::npos) << same.output;
 }
 
-TEST(Restart, DamBreakStoppedHalfwayContinuesBitForBit) {
-  const std::string out = freshOutputDirectory();
-  const std::string scene = shortDamBreak(out);
+// Runs `scene` whole, and stopped at 0.25 s on two threads and continued on one; the two run
+// files must be the same to the bit.
+void expectStopAndContinueBitForBit(const std::string& scene, const std::string& out) {
   const std::string whole = out + "/whole", part = out + "/part";
   const ProgramResult a =
       runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --fixed-threads --quiet");
@@ -80,6 +83,21 @@ TEST(Restart, DamBreakStoppedHalfwayContinuesBitForBit) {
   EXPECT_EQ(doubleAttribute(restarted, "/", "restart_time"), stoppedAt);
   EXPECT_FALSE(fs::exists(checkpoint)) << "a finished run removes its checkpoint";
   expectSameRun(whole + "/dam_break_dx0.025.h5", restarted);
+}
+
+TEST(Restart, DamBreakStoppedHalfwayContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  expectStopAndContinueBitForBit(shortDamBreak(out), out);
+  EXPECT_EQ(stringAttribute(out + "/part/dam_break_dx0.025.h5", "/", "integrator"),
+            "predictor_corrector");
+}
+
+// The same with position Verlet (issue 31): the checkpoint's scene carries the integrator.
+TEST(Restart, PositionVerletDamBreakStoppedHalfwayContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  expectStopAndContinueBitForBit(shortDamBreak(out, "position_verlet"), out);
+  EXPECT_EQ(stringAttribute(out + "/part/dam_break_dx0.025.h5", "/", "integrator"),
+            "position_verlet");
 }
 
 // The same in 3-D (CORE_SCENES/hydrostatic_box_3d.toml: 512 particles, 290 steps), whose

@@ -64,7 +64,8 @@ struct Manufactured {
     }
   }
 
-  static std::string scene(int n, const std::string& kernel, double hOverDx) {
+  static std::string scene(int n, const std::string& kernel, double hOverDx,
+                           const std::string& integrator = "predictor_corrector") {
     std::ostringstream s;
     s.precision(17);
     s << "name = \"mms\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n"
@@ -73,13 +74,14 @@ struct Manufactured {
       << "\nmu = " << nu * rho0 << "\ngamma = " << gamma
       << "\n[[fluid]]\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n[physics]\nmorris_viscosity = true\n"
       << "[numerics]\nkernel = \"" << kernel << "\"\ndx = " << 1.0 / n
-      << "\nh_over_dx = " << hOverDx << "\nend_time = 1.0\n";
+      << "\nh_over_dx = " << hOverDx << "\nintegrator = \"" << integrator << "\"\nend_time = 1.0\n";
     return s.str();
   }
 
   // The lattice of `scene` carrying the exact fields at t = 0, with V_j = dx^2 (m = rho dx^2).
-  static Simulation<2> simulation(int n, const std::string& kernel, double hOverDx) {
-    const Scene sc = parseScene(scene(n, kernel, hOverDx), "mms");
+  static Simulation<2> simulation(int n, const std::string& kernel, double hOverDx,
+                                  const std::string& integrator = "predictor_corrector") {
+    const Scene sc = parseScene(scene(n, kernel, hOverDx, integrator), "mms");
     Particles<2> p = latticeParticles<2>(sc);
     for (std::size_t i = 0; i < p.size(); ++i) {
       p.rho[i] = density(p.r[i], 0.0), p.v[i] = velocity(p.r[i], 0.0);

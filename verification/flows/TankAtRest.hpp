@@ -20,9 +20,9 @@ namespace sph::verification::tank_at_rest {
 constexpr double kH = 1.0, kG = 9.81, kRho0 = 1000.0;
 constexpr double speedBar = 0.01, bottomPressureBar = 0.01;  // issue 31
 
-// A model: the [physics] lines the scene adds to gravity.
+// A model: the [physics] lines the scene adds to gravity, and [numerics] lines (the integrator).
 struct Model {
-  std::string name, physics;
+  std::string name, physics, numerics = "";
 };
 // The paper's model (Lobovsky & Kren 2008, as validation/scenes/dam_break.toml): beta = 1,
 // Morris viscosity, variable h; then with each density diffusion form, delta = 0.1 (Molteni &
@@ -34,6 +34,10 @@ inline const Model molteniColagrossi{"paper + MC delta 0.1",
 inline const Model fourtakas{
     "paper + Fourtakas delta 0.1",
     paper.physics + "density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"\n"};
+
+// The same with position Verlet (integrators/PositionVerlet.hpp) for the time step.
+inline const Model fourtakasVerlet{"paper + Fourtakas delta 0.1, position Verlet",
+                                   fourtakas.physics, "integrator = \"position_verlet\"\n"};
 
 struct Kernel {
   std::string name;  // the scene's word
@@ -73,7 +77,8 @@ inline std::string sceneText(const Case& c, const Model& m) {
     << "[[fluid]]\nlower = [0.0, 0.0]\nupper = [" << c.aspect * kH << ", " << kH << "]\n"
     << "initial_pressure = \"hydrostatic\"\n"
     << "[physics]\ngravity = [0.0, " << -kG << "]\n"
-    << m.physics << "[numerics]\nkernel = \"" << c.kernel.name << "\"\ndx = " << kH / c.cells
+    << m.physics << "[numerics]\n"
+    << m.numerics << "kernel = \"" << c.kernel.name << "\"\ndx = " << kH / c.cells
     << "\nh_over_dx = " << c.kernel.hOverDx << "\nend_time = " << T << "\n";
   return s.str();
 }

@@ -62,6 +62,11 @@ struct Probe {
 enum class WallModel { mirror_ghosts, wall_particles };
 std::string_view name(WallModel);
 
+// The time integrator ([numerics] integrator, solver/SCENES.md): the paper's predictor-corrector
+// (integrators/PredictorCorrector.hpp) or position Verlet (integrators/PositionVerlet.hpp).
+enum class TimeIntegrator { predictor_corrector, position_verlet };
+std::string_view name(TimeIntegrator);
+
 // A solid box inside the domain made of fixed wall particles ([[obstacle]]).
 struct Obstacle {
   std::vector<double> lower, upper;
@@ -89,6 +94,7 @@ struct Scene {
   KernelKind kernel = KernelKind::quadratic;
   double dx = 0.0, hOverDx = 1.33;
   double cflAcoustic = 0.25, cflViscous = 0.125, cflForce = 0.25;  // Morris et al. 1997
+  TimeIntegrator integrator = TimeIntegrator::predictor_corrector;
   double endTime = 0.0;
   std::array<double, 2> densityBand{0.8, 1.2};  // a run fails when rho/rho0 leaves this band
   double neighbourSkin = 0.1;     // neighbour lists' skin, a fraction of the support (Simulation)

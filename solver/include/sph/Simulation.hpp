@@ -11,7 +11,6 @@
 #include "sph/Particles.hpp"
 #include "sph/Scene.hpp"
 #include "sph/boundaries/Boundary.hpp"
-#include "sph/integrators/PredictorCorrector.hpp"
 
 namespace sph {
 
@@ -72,9 +71,9 @@ class Simulation {
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
 
-  // One step of the integrator (the paper's predictor-corrector,
-  // integrators/PredictorCorrector.hpp). On failure the state stays the last good one.
-  std::optional<Failure> advance(double dtMax = 1e300);
+  // One step of the scene's integrator (numerics.integrator: integrators/). On failure the state
+  // stays the last good one.
+  std::optional<Failure> advance(double dtMax = 1e300) { return (this->*advance_)(dtMax); }
 
   // The rates of the given state at time t: every term, the body force and the source.
   void rates(const Particles<D>& state, double t, Derivatives<D>& out);
@@ -123,8 +122,12 @@ class Simulation {
   const Derivatives<D>& currentRates() const { return f_; }
 
  private:
-  using Integrator = integrators::PredictorCorrector;
   struct Stepper;  // what the integrator sees of a step (Simulation.cpp)
+  // advance() with the scene's integrator, chosen once in the constructor: each is its own
+  // instance of the step, with no test of the choice inside.
+  template <class Integrator>
+  std::optional<Failure> advanceWith(double dtMax);
+  std::optional<Failure> (Simulation::*advance_)(double) = nullptr;
   // The stable step and what limits it; `particle` is the one with the extreme speed, h or
   // acceleration.
   double timeStep(TimeStepLimit& limit, int& particle) const;
