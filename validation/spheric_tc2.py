@@ -120,7 +120,7 @@ def spheric_dam_break(res, runs: list, common_checks):
         study = [r for r in by_dx if model(r) == m and not smoke(r)]
         if len(study) < 2:
             continue
-        until = min(float(r.time[-1]) for r in study)  # as far as each got (a failed run stops early)
+        until = min(float(r.time[-1]) for r in study)  # as far as each got (a failed run ends early)
         for g in HEIGHTS + PRESSURES:
             err = [error_norm(r, g, until) for r in study]
             res.study(f"SPHERIC test 2 ({m}): {g} RMS error over [0, {until:g}] s", "dx [m]",
