@@ -157,7 +157,8 @@ def probe(run, pr, out: Path, quick: bool = False):
                 if ref.scatter:
                     ax.plot(rt, data[col], ls="none", marker="s", ms=3.5, mfc="none", label=label)
                 else:
-                    ax.plot(rt, data[col], ls="-", marker="o", ms=3, lw=0.8, label=label)
+                    dense = len(rt) > 500  # a sampled record (1 kHz), not a table: a line, no markers
+                    ax.plot(rt, data[col], ls="-", marker="none" if dense else "o", ms=3, lw=0.8, label=label)
     if scaled is not None:
         ax.set_xlabel(scaled.time_label)
         ax.set_ylabel(scaled.value_label)

@@ -32,7 +32,7 @@ class Reference:
     time_column: str
     value_columns: tuple  # one curve per column; three columns with band=True are (low, median, high)
     time_g_factor: float  # t* = t sqrt(time_g_factor g / L)
-    value_scaling: str  # "length": v / L, "initial": v / v0, "pressure": p / (rho g L)
+    value_scaling: str  # "length": v / L, "initial": v / v0, "pressure": p / (rho g L), "dimensional": t, v as they are
     time_label: str
     value_label: str
     band: bool = False
@@ -66,6 +66,14 @@ REFERENCES = {r.key: r for r in (
     Reference("lobovsky_2014_level_H4", "dambreak_lobovsky2014_H300_water_levels.csv",
               "Lobovsky et al. 2014, gauge H4", "t_star", ("h_over_H_H4_4", "h_over_H_H4_5"), 1.0, "length",
               r"$t\sqrt{g/H}$", r"$h/H$"),
+) + tuple(
+    Reference(f"kleefsman_2005_P{k}", "spheric_tc2_kleefsman2005_pressures.csv",
+              f"Kleefsman et al. 2005 (SPHERIC test 2), pressure P{k}", "t_s", (f"P{k}_Pa",), 1.0, "dimensional",
+              "t [s]", "p [Pa]") for k in range(1, 9)
+) + tuple(
+    Reference(f"kleefsman_2005_H{k}", "spheric_tc2_kleefsman2005_water_heights.csv",
+              f"Kleefsman et al. 2005 (SPHERIC test 2), water height H{k}", "t_s", (f"H{k}_m",), 1.0, "dimensional",
+              "t [s]", "h [m]") for k in range(1, 5)
 )}
 
 PROBE_REFERENCES = {
@@ -118,6 +126,8 @@ def scale_probe(run, probe, key: str):
     t = run.series.get("time")
     if t is None or len(t) != len(probe.values):
         return None, None, "no /series/time of the probe's length"
+    if ref.value_scaling == "dimensional":
+        return np.asarray(t, dtype=float), np.asarray(probe.values, dtype=float), ""
     length = probe.attrs.get("scale_length")
     if not isinstance(length, (int, float)) or not length > 0:
         return None, None, "probe has no `scale_length` attribute"

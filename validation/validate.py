@@ -3,7 +3,7 @@
 
     /usr/bin/python3 validation/validate.py CASE --runs DIR [--runs DIR ...] --results DIR SCENE [SCENE ...]
 
-CASE is dam_break, martin_moyce, drop_into_pool or two_fluids; each SCENE is a run file <DIR>/<SCENE>.h5 under one
+CASE is dam_break, martin_moyce, drop_into_pool, two_fluids or spheric_dam_break; each SCENE is a run file <DIR>/<SCENE>.h5 under one
 of the --runs directories. Writes <results>/validation.<CASE>.json (reports/SCHEMA.md, "Verification results": one
 check per figure of merit and run, and the resolution study as "convergence" entries with error against dx), prints
 a table, and exits 1 when a check fails or a run file is missing, so that ctest fails.
@@ -26,6 +26,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "reports"))
 import references  # noqa: E402  (reference_data/ loader and its scalings)
 from runfile import Run, read_run  # noqa: E402  (the one run-file reader)
+import spheric_tc2  # noqa: E402  (SPHERIC test 2, validation/spheric_tc2.py)
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -382,8 +383,12 @@ def two_fluids(res: Results, runs: list):
                           "dx / H", x, [p[2][f"err_{which}"] for p in sel], "Benjamin 1968 / Shin et al. 2004")
 
 
+def spheric_dam_break(res: Results, runs: list):
+    spheric_tc2.spheric_dam_break(res, runs, common_checks)
+
+
 CASES = {"dam_break": dam_break, "martin_moyce": martin_moyce, "drop_into_pool": drop_into_pool,
-         "two_fluids": two_fluids}
+         "two_fluids": two_fluids, "spheric_dam_break": spheric_dam_break}
 
 
 def main(argv=None) -> int:

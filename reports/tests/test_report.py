@@ -52,7 +52,7 @@ def test_stable_passing_run(tmp_path, make_run):
     assert "dam_break-snapshots.png" in names and "dam_break-volume.png" in names
     assert "dam_break-probe-surge_front.png" in names
     assert "PASS" in html and not summary["problems"]
-    assert summary["counts"] == {"total": 5, "passed": 2, "failed": 0, "not_run": 3}
+    assert summary["counts"] == {"total": 6, "passed": 2, "failed": 0, "not_run": 4}
     mine = by_run(summary, "dam_break")
     assert mine["status"]["outcome"] == "pass"
     npt.assert_allclose(mine["max_volume_variation"]["measured"], 0.001, rtol=0, atol=1e-15)
@@ -79,7 +79,7 @@ def test_criterion_failure_exits_nonzero(tmp_path, make_run):
     assert rc == 1
     vv = by_run(summary, "sub/dam_break_dx0.01")["max_volume_variation"]
     assert vv["case"] == "dam_break" and vv["outcome"] == "fail"
-    assert summary["counts"] == {"total": 5, "passed": 1, "failed": 1, "not_run": 3}
+    assert summary["counts"] == {"total": 6, "passed": 1, "failed": 1, "not_run": 4}
 
 
 def test_empty_directory_is_not_run(tmp_path):

@@ -3,13 +3,92 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sph/EquationOfState.hpp"
+#include "sph/Kernels.hpp"
+
 namespace sph {
+
+namespace {
+
+double largestH(const LineVector<double>& h) {
+  double most = 0;
+  for (double v : h) most = std::max(most, v);
+  return most;
+}
+
+// Diagnostics.hpp, wall_pressure.
+template <int D>
+double wallPressure(const Scene& scene, const Vec<D>& x, const Particles<D>& s) {
+  const double reach = 2.0 * largestH(s.h);  // lambda h, lambda = 2 for every kernel
+  Vec<D> g;
+  for (int a = 0; a < D; ++a) g[a] = scene.bodyAcceleration[a];
+  double sumVW = 0, sumVPW = 0, sumMRgW = 0;
+  for (std::size_t f = 0; f < s.size(); ++f) {
+    const Vec<D> r_xf = x - s.r[f];
+    const double r2 = r_xf.squaredNorm();
+    if (r2 >= reach * reach) continue;
+    const double W = kernelValue<D>(scene.kernel, std::sqrt(r2), s.h[f]);
+    if (W == 0.0) continue;
+    const double V = s.m[f] / s.rho[f];
+    const double p = TaitEquationOfState::pressure(s.rho[f], scene.phases[s.phase[f]]);
+    sumVW += V * W, sumVPW += V * p * W, sumMRgW += s.m[f] * g.dot(r_xf) * W;
+  }
+  return sumVW >= 0.1 ? (sumVPW + sumMRgW) / sumVW : 0.0;
+}
+
+// Diagnostics.hpp, water_height.
+template <int D>
+double waterHeight(const Scene& scene, const std::vector<double>& at, const Particles<D>& s) {
+  const int up = D - 1;
+  const double reach = 2.0 * largestH(s.h);
+  std::vector<std::size_t> near;  // the particles within reach of the vertical line
+  double top = scene.lower[up];
+  for (std::size_t f = 0; f < s.size(); ++f) {
+    double d2 = 0;
+    for (int a = 0; a < up; ++a) d2 += (s.r[f][a] - at[a]) * (s.r[f][a] - at[a]);
+    if (d2 < reach * reach) near.push_back(f), top = std::max(top, s.r[f][up]);
+  }
+  if (near.empty()) return 0.0;
+  const auto phi = [&](double z) {
+    Vec<D> x;
+    for (int a = 0; a < up; ++a) x[a] = at[a];
+    x[up] = z;
+    double sum = 0;
+    for (std::size_t f : near)
+      sum += s.m[f] / s.rho[f] * kernelValue<D>(scene.kernel, (x - s.r[f]).norm(), s.h[f]);
+    return sum;
+  };
+  // Downward from above the highest particle near the line to the floor: the first sample
+  // with phi >= 1/2 and the one above it bracket the crossing.
+  const double floor = scene.lower[up], dz = scene.dx / 8.0;
+  double zAbove = top + reach, phiAbove = phi(zAbove);
+  for (double z = zAbove - dz; z >= floor - 1e-12 * dz; z -= dz) {
+    const double here = phi(z);
+    if (here >= 0.5) {
+      const double frac = phiAbove < here ? (here - 0.5) / (here - phiAbove) : 0.0;
+      return z + frac * (zAbove - z) - floor;
+    }
+    zAbove = z, phiAbove = here;
+  }
+  return 0.0;
+}
+
+}  // namespace
 
 template <int D>
 double probe(const Scene& scene, const Probe& p, const Particles<D>& s,
              const InteractionSet<D>& set) {
   const int up = D - 1;
   const double floor = scene.lower[up];
+  if (p.type == "wall_pressure") {
+    Vec<D> x;
+    for (int a = 0; a < D; ++a) x[a] = p.position[a];
+    return wallPressure<D>(scene, x, s);
+  }
+  if (p.type == "water_height") {
+    if constexpr (D > 1) return waterHeight<D>(scene, p.position, s);
+    return 0.0;  // refused by the scene reader
+  }
   if (p.type == "surge_front") {
     double front = scene.lower[0];
     for (const auto& r : s.r) front = std::max(front, r[0]);
@@ -56,9 +135,10 @@ Diagnostics diagnose(const Scene& scene, const Particles<D>& s, const Interactio
   return d;
 }
 
-#define SPH_INSTANTIATE(D)                                                                      \
+#define SPH_INSTANTIATE(D)                                                                       \
   template Diagnostics diagnose<D>(const Scene&, const Particles<D>&, const InteractionSet<D>&); \
-  template double probe<D>(const Scene&, const Probe&, const Particles<D>&, const InteractionSet<D>&);
+  template double probe<D>(const Scene&, const Probe&, const Particles<D>&,                      \
+                           const InteractionSet<D>&);
 SPH_INSTANTIATE(1)
 SPH_INSTANTIATE(2)
 SPH_INSTANTIATE(3)

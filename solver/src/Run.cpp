@@ -69,10 +69,11 @@ class Series {
       columns.push_back({n, {}, {}, {}});
     for (const auto& ph : scene.phases) columns.push_back({"volume_error_" + ph.name, {}, {}, {}});
     for (const auto& p : scene.probes) {
-      SeriesColumn c{"probe_" + p.name,
-                     {},
-                     {{"type", p.type}, {"units", p.type == "pressure" ? "Pa" : "m"}},
-                     {}};
+      SeriesColumn c{
+          "probe_" + p.name,
+          {},
+          {{"type", p.type}, {"units", p.type.find("pressure") != std::string::npos ? "Pa" : "m"}},
+          {}};
       if (!p.reference.empty()) c.text.push_back({"reference", p.reference});
       if (p.scaleLength > 0) c.numbers.push_back({"scale_length", p.scaleLength});
       if (p.scaleHeight > 0) c.numbers.push_back({"scale_height", p.scaleHeight});

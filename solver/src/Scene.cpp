@@ -321,14 +321,15 @@ std::string fmtBox(const Scene& s) {
 }
 
 // A probe must look inside the domain: a pressure probe outside has no particle near it and
-// records 0 Pa for the whole run, a gauge beyond the walls an empty column.
+// records 0 Pa for the whole run, a gauge beyond the walls an empty column. A point probe gives
+// D coordinates, a water_height line the D - 1 horizontal ones, a gauge its x.
 void checkProbeInside(SceneTable& t, const Probe& p, const Scene& s) {
-  const bool point = p.type == "pressure";
+  const bool point = !p.position.empty();
   bool inside = true;
   std::ostringstream at;
   if (point) {
     at << "(";
-    for (int a = 0; a < s.dimension; ++a) {
+    for (std::size_t a = 0; a < p.position.size(); ++a) {
       inside = inside && p.position[a] >= s.lower[a] && p.position[a] <= s.upper[a];
       at << (a ? ", " : "") << p.position[a];
     }
@@ -342,6 +343,37 @@ void checkProbeInside(SceneTable& t, const Probe& p, const Scene& s) {
            "probe '" + p.name + "' at " + at.str() + " lies outside the domain " + fmtBox(s));
 }
 
+// A wall_pressure probe reads the fluid at a solid face (Diagnostics.hpp): the point must lie on
+// a wall face of the domain (free or no slip) or on a face of an obstacle, to 1e-9 of dx. With a
+// periodic face its sum would miss the images across it: refused.
+void checkOnSolidFace(SceneTable& t, const Probe& p, const Scene& s) {
+  const int D = s.dimension;
+  const double tol = 1e-9 * s.dx;
+  for (int a = 0; a < D; ++a)
+    if (s.faces[a][0] == FaceKind::periodic)
+      t.fail("type",
+             "a wall_pressure probe sums the fluid only, not its periodic images: the "
+             "scene's " +
+                 std::string(axisName[a]) + " faces are periodic");
+  const auto& x = p.position;
+  bool on = false;
+  for (int a = 0; a < D && !on; ++a)
+    for (int side = 0; side < 2 && !on; ++side)
+      on = Boundaries<3>::isWall(s.faces[a][side]) &&
+           std::abs(x[a] - (side ? s.upper[a] : s.lower[a])) <= tol;
+  for (const Obstacle& o : s.obstacles) {
+    bool within = true;  // inside the box or on its surface
+    for (int a = 0; a < D; ++a)
+      within = within && x[a] >= o.lower[a] - tol && x[a] <= o.upper[a] + tol;
+    for (int a = 0; a < D && within && !on; ++a)
+      on = std::abs(x[a] - o.lower[a]) <= tol || std::abs(x[a] - o.upper[a]) <= tol;
+  }
+  if (!on)
+    t.fail("position", "wall_pressure probe '" + p.name +
+                           "' must lie on a wall face of the domain (free_slip or no_slip) or on "
+                           "a face of an [[obstacle]]");
+}
+
 void readProbes(std::vector<SceneTable> probes, Scene& s) {
   std::set<std::string> names;
   for (auto& t : probes) {
@@ -350,15 +382,21 @@ void readProbes(std::vector<SceneTable> probes, Scene& s) {
     p.name = t.name("name");
     if (!names.insert(p.name).second) t.fail("name", "probe '" + p.name + "' defined twice");
     p.type = t.string("type");
-    if (p.type == "pressure") {
+    if (p.type == "pressure" || p.type == "wall_pressure") {
       p.position = t.vector("position", s.dimension);
+      checkProbeInside(t, p, s);
+      if (p.type == "wall_pressure") checkOnSolidFace(t, p, s);
+    } else if (p.type == "water_height") {
+      if (s.dimension < 2) t.fail("type", "a water_height probe needs dimension 2 or 3");
+      p.position = t.vector("position", s.dimension - 1);
       checkProbeInside(t, p, s);
     } else if (p.type == "water_level" || p.type == "column_height") {
       p.x = t.number("x");
       checkProbeInside(t, p, s);
     } else if (p.type != "surge_front") {
       t.fail("type", "unknown probe type '" + p.type +
-                         "' (expected surge_front, column_height, pressure or water_level)");
+                         "' (expected surge_front, column_height, pressure, water_level, "
+                         "wall_pressure or water_height)");
     }
     p.reference = t.string("reference", "");
     p.scaleLength = t.nonNegative("scale_length", 0.0);

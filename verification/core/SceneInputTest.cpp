@@ -72,6 +72,36 @@ TEST(SceneProbes, ProbeOnTheWallIsAccepted) {
   EXPECT_EQ(r.exitCode, 0) << r.output;
 }
 
+// Issue 36: a wall_pressure probe reads the fluid at a solid face, so it must sit on one; a
+// water_height line gives its D - 1 horizontal coordinates.
+TEST(SceneProbes, WallPressureOnTheFloorIsAccepted) {
+  const std::string path = editedScene("type = \"pressure\"\nposition = [0.05, 0.005]",
+                                       "type = \"wall_pressure\"\nposition = [0.05, 0.0]");
+  const ProgramResult r = runSph("check '" + path + "'");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+TEST(SceneProbes, WallPressureOffEveryFace) {
+  expectRejected("type = \"pressure\"\nposition = [0.05, 0.005]",
+                 "type = \"wall_pressure\"\nposition = [0.05, 0.005]", "probe[1].position",
+                 "must lie on a wall face of the domain");
+}
+
+TEST(SceneProbes, WallPressureOnTheOpenTop) {
+  expectRejected("type = \"pressure\"\nposition = [0.05, 0.005]",
+                 "type = \"wall_pressure\"\nposition = [0.05, 0.2]", "probe[1].position",
+                 "must lie on a wall face of the domain");
+}
+
+TEST(SceneProbes, WaterHeightTakesTheHorizontalCoordinates) {
+  expectRejected("type = \"pressure\"\nposition = [0.05, 0.005]",
+                 "type = \"water_height\"\nposition = [0.05, 0.005]", "probe[1].position",
+                 "expected 1 numbers");
+  expectRejected("type = \"pressure\"\nposition = [0.05, 0.005]",
+                 "type = \"water_height\"\nposition = [0.3]", "probe[1].position",
+                 "lies outside the domain");
+}
+
 // Part 5. A block thinner than dx/2 holds no particle (InitialParticlesTest.cpp: and none outside
 // it): it is refused rather than left out of the run unsaid.
 TEST(SceneBlocks, BlockThinnerThanHalfDx) {

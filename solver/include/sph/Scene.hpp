@@ -47,8 +47,11 @@ struct FluidBlock {
 };
 
 struct Probe {
-  std::string name, type;        // surge_front, column_height, pressure, water_level
-  std::vector<double> position;  // pressure: the point
+  // surge_front, column_height, pressure, water_level, wall_pressure, water_height
+  std::string name, type;
+  // pressure, wall_pressure: the point (D numbers); water_height: the vertical line's
+  // horizontal coordinates (D - 1 numbers)
+  std::vector<double> position;
   double x = 0.0;  // water_level: gauge position; column_height: band 0..x from the lower wall
   // For the report (reports/README.md): reference data keys and the scales of their nondimensional
   // form, written as attributes of /series/probe_<name>. Zero or empty: not given.
