@@ -201,11 +201,10 @@ def convergence(entry: dict, out: Path, index: int, quick: bool = False):
         color = "#2e7d32" if ok else "#c62828"
     else:
         text, color = "no criterion: a finding, reported as measured", "#555555"
-    ax.text(0.02, 0.98, textwrap.fill(text, 48), transform=ax.transAxes, va="top", ha="left", fontsize=7,
-            color=color, fontweight="bold", bbox=dict(boxstyle="round", fc="white", ec=color, alpha=0.9))
     ax.set_xlabel(entry["x_label"])
     ax.set_ylabel(textwrap.fill(entry["name"], 40), fontsize=7)
-    ax.set_title(f"{entry['test']}", fontsize=9)
+    # The verdict above the axes, where it covers no data.
+    ax.set_title(textwrap.fill(text, 70), fontsize=8, color=color, fontweight="bold")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     return _save(fig, out, f"convergence-{index:02d}-{slug(entry['name'])}.png", 80 if quick else 110)

@@ -188,8 +188,8 @@ def traceability(m: dict) -> str:
     """Requirement -> criteria -> verdict (reports/traceability.py)."""
     rows = []
     for r in m["rows"]:
-        cls = {"FAIL": "fail", "PASS": "pass", "NOT RUN": "notrun"}[r["verdict"]]
-        rcls = {"FAIL": "r-fail", "PASS": "r-pass", "NOT RUN": "r-notrun"}[r["verdict"]]
+        cls = {"FAIL": "fail", "PASS": "pass", "NOT RUN": "notrun", "NO RECORD": "notrun"}[r["verdict"]]
+        rcls = {"FAIL": "r-fail", "PASS": "r-pass", "NOT RUN": "r-notrun", "NO RECORD": "r-notrun"}[r["verdict"]]
         rows.append(f'<tr class="{cls}" id="{escape(r["id"])}"><td class="{rcls}">{escape(r["verdict"])}</td>'
                     f'<td class="num">{escape(r["id"])}</td><td>{escape(r["requirement"])}<br>'
                     f'<span class="note">source: {escape(str(r["source"]))}</span></td>'
@@ -198,7 +198,9 @@ def traceability(m: dict) -> str:
     warn = (f'<p class="warn">{len(untraced)} criteria trace to no requirement: '
             + escape("; ".join(untraced[:10])) + (" ..." if len(untraced) > 10 else "") + "</p>") if untraced else ""
     return ('<p class="note">Requirement IDs: validation/criteria.toml (each criterion) and '
-            'verification/requirements.toml (each test group). Criteria: passed / failed / not run.</p>' + warn
+            'verification/requirements.toml (each test group). Criteria: passed / failed / not run. '
+            "NO RECORD: no result file of the group's tests reached the report (ctest runs them and decides them by "
+            "their exit code; they record no checks the report could re-check).</p>" + warn
             + '<table class="trace"><tr><th>verdict</th><th>ID</th><th>requirement</th><th>criteria</th></tr>'
             + "".join(rows) + "</table>")
 

@@ -84,10 +84,12 @@ def matrix(found: list, table: dict, requirements: list) -> dict:
     rows = []
     for rid, r in reqs.items():
         t = tally[rid]
-        verdict = "FAIL" if t[FAIL] else ("PASS" if t[PASS] else "NOT RUN")
+        # NO RECORD: no criterion reached the report; the group's tests may still have run in ctest, which decides
+        # them by exit code, but they write no result file (SCHEMA.md) the report could re-check.
+        verdict = "FAIL" if t[FAIL] else ("PASS" if t[PASS] else ("NOT RUN" if t[NOT_RUN] else "NO RECORD"))
         rows.append(dict(r, passed=t[PASS], failed=t[FAIL], not_run=t[NOT_RUN], verdict=verdict,
                          criteria=t["criteria"]))
-    order = {"FAIL": 0, "PASS": 1, "NOT RUN": 2}
+    order = {"FAIL": 0, "PASS": 1, "NOT RUN": 2, "NO RECORD": 3}
     rows.sort(key=lambda r: (order[r["verdict"]], r["id"]))
     return {"rows": rows, "untraced": untraced}
 

@@ -71,6 +71,8 @@ def check_page(page: Path, scratch: Path, shot: Path | None = None, height: int 
 def check_site(report: Path, scratch: Path, shots: Path | None = None) -> list:
     """check_page for every *.html of a report directory (index.html first)."""
     pages = sorted(report.glob("*.html"), key=lambda p: (p.name != "index.html", p.name))
+    if shots is not None:
+        shots.mkdir(parents=True, exist_ok=True)
     out = []
     for p in pages:
         shot = None if shots is None else shots / (p.stem + ".png")

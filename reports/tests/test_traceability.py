@@ -45,6 +45,6 @@ def test_matrix_in_the_report(tmp_path, make_run, make_result):
     rows = {r["id"]: r for r in summary["traceability"]["rows"]}
     assert rows["VAL-DB-1"]["verdict"] == "FAIL" and rows["VAL-DB-1"]["failed"] == 1
     assert rows["VER-KER-1"]["verdict"] == "PASS" and rows["VAL-RUN-1"]["passed"] == 1
-    assert rows["VAL-DP-1"]["verdict"] == "NOT RUN"
+    assert rows["VAL-DP-1"]["verdict"] == "NOT RUN" and rows["VER-NBR-1"]["verdict"] == "NO RECORD"
     assert len(summary["traceability"]["untraced"]) == 1
     assert summary["traceability"]["rows"][0]["verdict"] == "FAIL"  # failures first
