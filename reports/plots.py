@@ -242,7 +242,8 @@ def speed_accuracy(case: str, data: dict, out: Path, quick: bool = False):
     methods = sorted({p["method"] for p in pts})
     for k, method in enumerate(methods):
         mine = sorted((p for p in pts if p["method"] == method), key=lambda p: p["wall_time_s"])
-        ax.plot([p["wall_time_s"] for p in mine], [p["error"] for p in mine], "-o", color=f"C{k}", label=method)
+        ax.plot([p["wall_time_s"] for p in mine], [p["error"] for p in mine], "-o", color=f"C{k}",
+                label=textwrap.fill(method.replace(",", ", "), 40))
         for p in mine:
             text = p.get("label") or (f"N={p['particles']}" if p["particles"] is not None else p["run"])
             ax.annotate(text, (p["wall_time_s"], p["error"]), fontsize=6, xytext=(3, 3), textcoords="offset points")
@@ -257,7 +258,7 @@ def speed_accuracy(case: str, data: dict, out: Path, quick: bool = False):
         ax.set_xscale("log")
         ax.set_yscale("log")
     ax.set_xlabel("wall time [s] (/metrics/wall_time_s)")
-    ax.set_ylabel("error")
+    ax.set_ylabel(textwrap.fill(data["error"], 45), fontsize=7)
     ax.set_title(textwrap.fill(f"{case}: {data['error']}", 100), fontsize=8)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # beside the data, never over it
@@ -330,11 +331,11 @@ def vv20(row: dict, out: Path, index: int, quick: bool = False):
                   fontsize=8)
     if row.get("E") is not None:
         verdict = "band holds 0" if row["zero_in_band"] else "band excludes 0: model error"
-        head = (f"E = S - D = {row['E']:.3g}, E +- {k:g} u_val = [{row['band'][0]:.3g}, {row['band'][1]:.3g}] "
+        head = (f"E = S - D = {row['E']:.3g}, E \u00b1 {k:g} u_val = [{row['band'][0]:.3g}, {row['band'][1]:.3g}] "
                 f"({verdict})")
     else:
         head = f"no experiment: u_num = {row['u_num']:.3g}"
-    ax.set_title(textwrap.fill(f"{row['name']}\n{head}", 90), fontsize=8)
+    ax.set_title(textwrap.fill(row["name"], 90) + "\n" + textwrap.fill(head, 90), fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.2), frameon=False, ncol=2)
     return _save(fig, out, f"vv20-{index:02d}-{slug(row['name'])}.png", 80 if quick else 110)
@@ -347,13 +348,19 @@ def trend(t: dict, entries: list, out: Path, index: int, quick: bool = False):
     fig, ax = plt.subplots(figsize=(6.4, 3.0))
     x, y, ld = np.asarray(t["runs"]), np.asarray(t["values"], dtype=float), np.asarray(t["loaded"], dtype=bool)
     ax.plot(x, y, "-", color="0.6", lw=0.8)
-    ax.plot(x[~ld], y[~ld], "o", color="k", ms=4, label="run on a quiet machine")
+    if (~ld).any():
+        ax.plot(x[~ld], y[~ld], "o", color="k", ms=4, label="run on a quiet machine")
     if ld.any():
         ax.plot(x[ld], y[ld], "o", mfc="none", color="tab:orange", ms=5, label="run on a loaded machine")
     ax.axhspan(t["mean"] - t["noise"], t["mean"] + t["noise"], color="tab:blue", alpha=0.15, lw=0,
                label="earlier runs' mean +- noise")
     if t["flagged"]:
         ax.plot(x[-1:], y[-1:], "o", color="tab:red", ms=7, label="latest: change beyond the noise")
+    # Plain tick labels (no "1e-11 + 8.5e-3" offset), and a window of at least 0.1 % of the value, so that a
+    # figure that did not move reads as a flat line at its value.
+    ax.ticklabel_format(axis="y", useOffset=False)
+    half = max(3 * t["noise"], 1e-3 * abs(t["mean"]), float(np.ptp(y)), 1e-12)
+    ax.set_ylim(min(y.min(), t["mean"]) - half, max(y.max(), t["mean"]) + half)
     labels = [f"{k}\n{str(entries[k].get('commit', ''))[:7]}" for k in x]
     ax.set_xticks(x, labels, fontsize=6)
     ax.set_xlabel("report run (index, commit)")

@@ -274,7 +274,7 @@ def speed_accuracy(items: dict) -> str:
     parts = []
     for case, d in items.items():
         swept = any("outcome" in p for p in d["points"])  # stability-sweep points carry their outcome
-        rows = "".join(f"<tr><td>{escape(p['run'])}</td><td>{escape(p['method'])}</td><td>{_fmt(p['particles'])}</td>"
+        rows = "".join(f"<tr><td>{escape(p['run'])}</td><td>{escape(p['method']).replace(',', ',<wbr>')}</td><td>{_fmt(p['particles'])}</td>"
                        f"<td>{_fmt(p['wall_time_s'])}</td><td>{_fmt(p['error'])}</td>"
                        + (f"<td>{escape(str(p.get('outcome')))} {escape(str(p.get('cause') or ''))}</td>" if swept else "")
                        + "</tr>" for p in d["points"])

@@ -87,10 +87,10 @@ def index(r: dict) -> str:
             f'<code>{escape(i["criteria"])}</code>. Also: <a href="summary.json">summary.json</a>, '
             f'<a href="junit.xml">junit.xml</a>.</p>'
             f'<section><h2>Contents</h2><ul class="toc">{toc}</ul></section>'
-            f"<section><h2>Criteria by case</h2>{H.case_tally(r['criteria'])}</section>"
             f"<section><h2>Failed criteria ({len(failed)})</h2>"
             + (H.summary_table(failed) if failed else '<p class="r-pass">none</p>')
-            + '<p class="note">Every criterion: <a href="criteria.html">All criteria</a>.</p></section>')
+            + '<p class="note">Every criterion: <a href="criteria.html">All criteria</a>.</p></section>'
+            f"<section><h2>Criteria by case</h2>{H.case_tally(r['criteria'])}</section>")
 
 
 def pages(r: dict) -> dict:
