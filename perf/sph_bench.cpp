@@ -121,6 +121,9 @@ double timePerCall(F&& f, double minBatch = 0.2, int batches = 5) {
 struct Json {
   std::string title, xLabel, yLabel, source;
   std::vector<std::pair<std::string, std::pair<std::vector<double>, std::vector<double>>>> series;
+  // label -> when and where a series was recorded: a reference not measured by this run (the report
+  // draws it as such, reports/README.md).
+  std::map<std::string, std::string> recorded;
   void write(const std::filesystem::path& file) const {
     std::ofstream out(file);
     out.precision(10);
@@ -133,7 +136,10 @@ struct Json {
       out << "], \"y\": [";
       for (std::size_t k = 0; k < series[s].second.second.size(); ++k)
         out << (k ? ", " : "") << series[s].second.second[k];
-      out << "]}";
+      out << "]";
+      if (const auto r = recorded.find(series[s].first); r != recorded.end())
+        out << ", \"recorded\": \"" << r->second << "\"";
+      out << "}";
     }
     out << "],\n \"source\": \"" << source << "\"}\n";
   }
@@ -471,7 +477,11 @@ int main(int argc, char** argv) {
     if (!dbTrips.empty())
       db.source += "; our 2-thread runs' core-to-core round trip before/after: " + dbTrips +
                    " ns (50-80: the vCPUs share a cache; 310-380: they do not)";
-    if (!px.empty()) db.series.push_back({"DualSPHysics 5.4, 2 threads", {px, py}});
+    if (!px.empty()) {
+      db.series.push_back({"DualSPHysics 5.4, 2 threads", {px, py}});
+      db.recorded["DualSPHysics 5.4, 2 threads"] =
+          "issue 7's table, measured once on this kind of machine, in this code since 2026-11-23";
+    }
     db.write(std::filesystem::path(outDir) / "perf_dam_break.json");
   }
   // A benchmark's only assertions: every run finished, and the thread count changed no bit.

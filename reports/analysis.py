@@ -5,6 +5,7 @@ Everything here is computed from what the run and result files hold; plotting ha
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 
@@ -21,15 +22,37 @@ def fit_order(x, error):
     return float(np.polyfit(np.log(x[keep]), np.log(error[keep]), 1)[0])
 
 
+_WORD = re.compile(r"[a-z0-9.]+")
+
+
+def order_criterion(entry: dict, checks: list):
+    """The check of the same result file that decides this convergence entry's order: among the checks whose name
+    says "order", the one sharing most words with the entry's name (None when the file has no order check; the
+    entry is then a finding). Returns {name, measured, comparison, threshold, pass}."""
+    words = set(_WORD.findall(str(entry.get("name", "")).lower()))
+    best, score = None, -1
+    for c in checks:
+        name = str(c.get("name", ""))
+        if "order" not in name.lower() or not isinstance(c.get("threshold"), (int, float)):
+            continue
+        shared = len(words & set(_WORD.findall(name.lower())))
+        if shared > score:
+            best, score = c, shared
+    if best is None:
+        return None
+    return {k: best.get(k) for k in ("name", "measured", "comparison", "threshold", "pass")}
+
+
 def convergence_entries(results: list) -> list:
     out = []
     for res in results:
+        checks = [c for c in res.data.get("checks", []) if isinstance(c, dict)]
         for entry in res.data.get("convergence", []):
             x, err = entry.get("x", []), entry.get("error", [])
             out.append({"test": res.test, "name": str(entry.get("name", "?")), "x_label": entry.get("x_label", "x"),
                         "x": list(x), "error": list(err), "fitted_order": fit_order(x, err),
                         "observed_order": entry.get("observed_order"), "theory_order": entry.get("theory_order"),
-                        "source": entry.get("source", "")})
+                        "source": entry.get("source", ""), "criterion": order_criterion(entry, checks)})
     return out
 
 
@@ -73,12 +96,14 @@ def _reference_pair(runs):
     return None
 
 
-def speed_accuracy(runs: list, known_cases) -> dict:
+def speed_accuracy(runs: list) -> dict:
     """{case: {"error": what the error is, "points": [...]}} for cases with two or more readable runs."""
     groups = {}
     for run in runs:
         if not run.read_error and isinstance(run.metrics.get("wall_time_s"), (int, float)):
-            groups.setdefault(family(run.scene_name, known_cases), []).append(run)
+            # One line per scene at its resolutions (the paper's dam break and Lobovsky's are two scenes of one
+            # criteria case, never one line).
+            groups.setdefault(family(run.scene_name), []).append(run)
     out = {}
     for case, members in sorted(groups.items()):
         if len(members) < 2:

@@ -144,7 +144,7 @@ def probe(run, pr, out: Path, quick: bool = False):
             continue
         if scaled is None:
             scaled = ref
-            ax.plot(ts, vs, color="k", lw=1.4, label=f"SPH, {run.label}", zorder=3)
+            ax.plot(ts, vs, color="k", lw=1.4, label=f"SPH, {run.label}", zorder=2)  # under the markers
         data = references.load(key)
         rt = data[ref.time_column]
         if ref.band:
@@ -155,10 +155,11 @@ def probe(run, pr, out: Path, quick: bool = False):
             for col in ref.value_columns:
                 label = ref.citation + (f" ({col})" if len(ref.value_columns) > 1 else "")
                 if ref.scatter:
-                    ax.plot(rt, data[col], ls="none", marker="s", ms=3.5, mfc="none", label=label)
+                    ax.plot(rt, data[col], ls="none", marker="s", ms=3.5, mfc="none", label=label, zorder=4)
                 else:
                     dense = len(rt) > 500  # a sampled record (1 kHz), not a table: a line, no markers
-                    ax.plot(rt, data[col], ls="-", marker="none" if dense else "o", ms=3, lw=0.8, label=label)
+                    ax.plot(rt, data[col], ls="-", marker="none" if dense else "o", ms=3, lw=0.8, label=label,
+                            zorder=4)
     if scaled is not None:
         ax.set_xlabel(scaled.time_label)
         ax.set_ylabel(scaled.value_label)
@@ -169,19 +170,21 @@ def probe(run, pr, out: Path, quick: bool = False):
         ax.set_ylabel(f"{pr.name} [{pr.attrs.get('units', '?')}]")
     ax.set_title(f"{run.label}: probe {pr.name} ({pr.attrs.get('type', '?')})", fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # beside the data, never over it
     return _save(fig, out, f"{slug(run.label)}-probe-{slug(pr.name)}.png", 80 if quick else 110), notes
 
 
 def convergence(entry: dict, out: Path, index: int, quick: bool = False):
+    """Error against resolution on log axes, the fitted and the theory slope, and the criterion that decides the
+    order with its PASS/FAIL in the corner (or "no criterion: a finding")."""
     x, err = np.asarray(entry["x"], dtype=float), np.asarray(entry["error"], dtype=float)
     if x.size == 0 or x.size != err.size:
         return None
     plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(4.8, 3.6))
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
     ax.loglog(x, err, "o", color="k", label=f"measured ({entry['source']})" if entry["source"] else "measured")
     p = entry["fitted_order"]
-    keep = (x > 0) & (err > 0)
+    keep = (x > 0) & (err > 0) & np.isfinite(err)
     if p is not None:
         c = np.exp(np.mean(np.log(err[keep]) - p * np.log(x[keep])))
         xs = np.array([x[keep].min(), x[keep].max()])
@@ -191,11 +194,21 @@ def convergence(entry: dict, out: Path, index: int, quick: bool = False):
         x0, e0 = x[keep][np.argmin(x[keep])], err[keep][np.argmin(x[keep])]
         xs = np.array([x[keep].min(), x[keep].max()])
         ax.loglog(xs, e0 * (xs / x0) ** q, "--", color="tab:red", label=f"theory slope {q:g}")
+    crit = entry.get("criterion")
+    if crit:
+        ok = bool(crit.get("pass"))
+        measured = crit.get("measured")
+        text = (f"{'PASS' if ok else 'FAIL'}: {crit['name']}\n{measured:.3g} {crit['comparison']} {crit['threshold']:g}"
+                if isinstance(measured, (int, float)) else f"{'PASS' if ok else 'FAIL'}: {crit['name']}")
+        color = "#2e7d32" if ok else "#c62828"
+    else:
+        text, color = "no criterion: a finding, reported as measured", "#555555"
     ax.set_xlabel(entry["x_label"])
-    ax.set_ylabel("error")
-    ax.set_title(f"{entry['test']}: {entry['name']}", fontsize=9)
+    ax.set_ylabel(textwrap.fill(entry["name"], 40), fontsize=7)
+    # The verdict above the axes, where it covers no data.
+    ax.set_title(textwrap.fill(text, 70), fontsize=8, color=color, fontweight="bold")
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     return _save(fig, out, f"convergence-{index:02d}-{slug(entry['name'])}.png", 80 if quick else 110)
 
 
@@ -217,7 +230,7 @@ def history(group: dict, out: Path, index: int, quick: bool = False):
     ax.set_ylabel(group["y_label"])
     ax.set_title(group["test"], fontsize=9)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=6)
+    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # beside the data, never over it
     return _save(fig, out, f"history-{index:02d}-{slug(group['test'] + '-' + group['y_label'])}.png",
                  80 if quick else 110)
 
@@ -231,7 +244,8 @@ def speed_accuracy(case: str, data: dict, out: Path, quick: bool = False):
     methods = sorted({p["method"] for p in pts})
     for k, method in enumerate(methods):
         mine = sorted((p for p in pts if p["method"] == method), key=lambda p: p["wall_time_s"])
-        ax.plot([p["wall_time_s"] for p in mine], [p["error"] for p in mine], "-o", color=f"C{k}", label=method)
+        ax.plot([p["wall_time_s"] for p in mine], [p["error"] for p in mine], "-o", color=f"C{k}",
+                label=textwrap.fill(method.replace(",", ", "), 40))
         for p in mine:
             text = p.get("label") or (f"N={p['particles']}" if p["particles"] is not None else p["run"])
             ax.annotate(text, (p["wall_time_s"], p["error"]), fontsize=6, xytext=(3, 3), textcoords="offset points")
@@ -246,10 +260,10 @@ def speed_accuracy(case: str, data: dict, out: Path, quick: bool = False):
         ax.set_xscale("log")
         ax.set_yscale("log")
     ax.set_xlabel("wall time [s] (/metrics/wall_time_s)")
-    ax.set_ylabel("error")
+    ax.set_ylabel(textwrap.fill(data["error"], 45), fontsize=7)
     ax.set_title(textwrap.fill(f"{case}: {data['error']}", 100), fontsize=8)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=6)
+    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # beside the data, never over it
     return _save(fig, out, f"speed-accuracy-{slug(case)}.png", 80 if quick else 110)
 
 
@@ -271,7 +285,7 @@ def stability(sweep: dict, out: Path, index: int, quick: bool = False):
         ax.set_yticks(ticks["values"], ticks["labels"])
     ax.set_title(str(sweep.get("sweep", "stability sweep")), fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # beside the data, never over it
     return _save(fig, out, f"stability-{index:02d}-{slug(str(sweep.get('sweep', '')))}.png", 80 if quick else 110)
 
 
@@ -279,10 +293,80 @@ def perf_series(bench: dict, out: Path, index: int, quick: bool = False):
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(6.0, 3.8))
     for k, s in enumerate(bench["series"]):
-        ax.plot(s["x"], s["y"], "-o", color=f"C{k}", label=str(s.get("label", k)))
+        if s.get("recorded"):  # a dated reference, not measured by this run: grey, dashed, hollow
+            ax.plot(s["x"], s["y"], "--s", color="0.5", mfc="none",
+                    label=textwrap.fill(f"{s.get('label', k)}: recorded reference ({s['recorded']}), "
+                                        "not measured by this run", 45))
+        else:
+            ax.plot(s["x"], s["y"], "-o", color=f"C{k}", label=str(s.get("label", k)))
     ax.set_xlabel(bench.get("x_label", "x"))
     ax.set_ylabel(bench.get("y_label", "y"))
     ax.set_title(str(bench.get("benchmark", "benchmark")), fontsize=10)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)  # beside the data, never over it
     return _save(fig, out, f"perf-{index:02d}-{slug(str(bench.get('benchmark', '')))}.png", 80 if quick else 110)
+
+
+def vv20(row: dict, out: Path, index: int, quick: bool = False):
+    """One figure of merit at its three resolutions (reports/uncertainty.py): S against h, the extrapolated value at
+    h = 0 with +- k u_num, and the experiment D with its +- k u_D band; the title gives E +- k u_val."""
+    study = row["study"]
+    h, phi = np.asarray(study["h"]), np.asarray(study["phi"])
+    k = row["k"]
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.4, 3.6))
+    ax.plot(h, phi, "o-", color="k", label="SPH at three resolutions", zorder=3)
+    if row.get("D") is not None:
+        d, ud = row["D"], row.get("u_D") or 0.0
+        ax.axhline(d, color="tab:blue", lw=1.2, label=f"D: {row['D_source']}")
+        if ud > 0:
+            ax.axhspan(d - k * ud, d + k * ud, color="tab:blue", alpha=0.18, lw=0, label=f"D +- {k:g} u_D")
+    if study.get("phi_ext") is not None:
+        ax.errorbar([0.0], [study["phi_ext"]], yerr=[[k * row["u_num"]], [k * row["u_num"]]], fmt="s",
+                    color="tab:red", capsize=4, label=f"extrapolated to h = 0, +- {k:g} u_num")
+    else:
+        ax.errorbar([h[0]], [phi[0]], yerr=[[k * row["u_num"]], [k * row["u_num"]]], fmt="none", color="tab:red",
+                    capsize=4, label=f"finest run +- {k:g} u_num ({study['kind']}: no extrapolation)")
+    ax.set_xlim(left=-0.05 * h.max())
+    ax.set_xlabel(row["x_label"])
+    ax.set_ylabel(f"{row['name'].split(': ', 1)[-1]}" + (f" [{row['unit']}]" if row["unit"] not in ("", "-") else ""),
+                  fontsize=8)
+    if row.get("E") is not None:
+        verdict = "band holds 0" if row["zero_in_band"] else "band excludes 0: model error"
+        head = (f"E = S - D = {row['E']:.3g}, E \u00b1 {k:g} u_val = [{row['band'][0]:.3g}, {row['band'][1]:.3g}] "
+                f"({verdict})")
+    else:
+        head = f"no experiment: u_num = {row['u_num']:.3g}"
+    ax.set_title(textwrap.fill(row["name"], 90) + "\n" + textwrap.fill(head, 90), fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.2), frameon=False, ncol=2)
+    return _save(fig, out, f"vv20-{index:02d}-{slug(row['name'])}.png", 80 if quick else 110)
+
+
+def trend(t: dict, entries: list, out: Path, index: int, quick: bool = False):
+    """One figure's value over the stored report runs (reports/history.py): loaded runs hollow, the band
+    mean +- noise of the earlier runs, the latest run red when it is flagged."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.4, 3.0))
+    x, y, ld = np.asarray(t["runs"]), np.asarray(t["values"], dtype=float), np.asarray(t["loaded"], dtype=bool)
+    ax.plot(x, y, "-", color="0.6", lw=0.8)
+    if (~ld).any():
+        ax.plot(x[~ld], y[~ld], "o", color="k", ms=4, label="run on a quiet machine")
+    if ld.any():
+        ax.plot(x[ld], y[ld], "o", mfc="none", color="tab:orange", ms=5, label="run on a loaded machine")
+    ax.axhspan(t["mean"] - t["noise"], t["mean"] + t["noise"], color="tab:blue", alpha=0.15, lw=0,
+               label="earlier runs' mean +- noise")
+    if t["flagged"]:
+        ax.plot(x[-1:], y[-1:], "o", color="tab:red", ms=7, label="latest: change beyond the noise")
+    # Plain tick labels (no "1e-11 + 8.5e-3" offset), and a window of at least 0.1 % of the value, so that a
+    # figure that did not move reads as a flat line at its value.
+    ax.ticklabel_format(axis="y", useOffset=False)
+    half = max(3 * t["noise"], 1e-3 * abs(t["mean"]), float(np.ptp(y)), 1e-12)
+    ax.set_ylim(min(y.min(), t["mean"]) - half, max(y.max(), t["mean"]) + half)
+    labels = [f"{k}\n{str(entries[k].get('commit', ''))[:7]}" for k in x]
+    ax.set_xticks(x, labels, fontsize=6)
+    ax.set_xlabel("report run (index, commit)")
+    ax.set_title(textwrap.fill(t["key"], 95), fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+    return _save(fig, out, f"trend-{index:02d}-{slug(t['key'])[:80]}.png", 80 if quick else 110)

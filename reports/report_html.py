@@ -1,29 +1,13 @@
-"""index.html from the assembled report: inline styles, images as PNG files beside it, no scripts, no network.
+"""The report's sections as HTML fragments (site.py puts them on pages). Images are PNG files beside the pages.
 (Not named html.py, which would shadow the standard library's html module.)"""
 from __future__ import annotations
 
+import re
 from html import escape
 
 from criteria import FAIL, NOT_RUN, PASS
 
-STYLE = """
-body{font-family:system-ui,-apple-system,Segoe UI,Helvetica,Arial,sans-serif;margin:1.5em auto;max-width:1200px;
-color:#222;padding:0 1em}
-.banner{font-size:2.4em;font-weight:700;padding:.5em .8em;border-radius:8px;color:#fff;margin-bottom:.4em}
-.banner small{font-size:.45em;font-weight:400;display:block}
-.b-pass{background:#2e7d32}.b-fail{background:#c62828}.b-none{background:#757575}
-table{border-collapse:collapse;margin:.6em 0;font-size:.88em;max-width:100%}
-th,td{border:1px solid #ccc;padding:.25em .5em;text-align:left;vertical-align:top;overflow-wrap:anywhere}
-th{overflow-wrap:normal}table.criteria td.crit{min-width:18em}
-table.criteria td.num,table.criteria td:first-child{white-space:nowrap;overflow-wrap:normal}
-th{background:#f0f0f0}
-tr.fail td{background:#fdecea}tr.notrun td{background:#f5f5f5;color:#666}
-.r-pass{color:#2e7d32;font-weight:700}.r-fail{color:#c62828;font-weight:700}.r-notrun{color:#666}
-.note{color:#555;font-size:.9em}.warn{color:#c62828;font-weight:700}
-img{max-width:100%;border:1px solid #eee;margin:.3em 0}
-section{margin-top:2em;border-top:2px solid #ddd}
-code{background:#f4f4f4;padding:0 .2em}
-"""
+
 
 
 def _fmt(v) -> str:
@@ -34,8 +18,22 @@ def _fmt(v) -> str:
     return escape(str(v))
 
 
+def anchor(name: str) -> str:
+    """The id of a figure: its file name without the suffix (file names are slugs, plots.slug)."""
+    return "fig-" + re.sub(r"[^A-Za-z0-9_-]+", "-", str(name).rsplit(".", 1)[0])
+
+
 def _img(name, alt) -> str:
-    return f'<p><img src="{escape(name)}" alt="{escape(alt)}"></p>' if name else ""
+    """A figure with its own anchor and a link to it, so that every figure can be linked to."""
+    if not name:
+        return ""
+    fid = anchor(name)
+    return (f'<figure id="{fid}"><img src="{escape(name)}" alt="{escape(alt)}">'
+            f'<figcaption><a href="#{fid}" title="link to this figure">#</a> {escape(alt)}</figcaption></figure>')
+
+
+def _fig(name, alt, _kind="") -> str:
+    return _img(name, alt)
 
 
 def _notes(notes) -> str:
@@ -126,10 +124,125 @@ def convergence(entries: list) -> str:
     parts = []
     for e in entries:
         fitted = "&mdash;" if e["fitted_order"] is None else f"{e['fitted_order']:.2f}"
+        crit = e.get("criterion")
+        if crit:
+            word = '<span class="r-pass">PASS</span>' if crit.get("pass") else '<span class="r-fail">FAIL</span>'
+            decided = (f"{word} criterion: {escape(str(crit['name']))}: {_fmt(crit.get('measured'))} "
+                       f"{escape(str(crit.get('comparison')))} {_fmt(crit.get('threshold'))}")
+        else:
+            decided = '<span class="r-notrun">no criterion</span>: a finding, reported as measured'
         parts.append(f"<h3>{escape(e['test'])}: {escape(e['name'])}</h3>"
-                     f"<p>fitted slope <b>{fitted}</b> &nbsp; theory <b>{_fmt(e['theory_order'])}</b> &nbsp; "
-                     f"(the test reported {_fmt(e['observed_order'])}; {escape(str(e['source']))})</p>"
+                     f"<p>{decided}<br>fitted slope <b>{fitted}</b> &nbsp; theory <b>{_fmt(e['theory_order'])}</b> "
+                     f"&nbsp; (the test reported {_fmt(e['observed_order'])}; {escape(str(e['source']))})</p>"
                      + _img(e.get("figure"), e["name"]))
+    return "".join(parts)
+
+
+def _g(v, fmt="{:.4g}") -> str:
+    return "&mdash;" if v is None else fmt.format(v)
+
+
+def vv20(rows: list) -> str:
+    """The V&V 20 table (reports/uncertainty.py): one row per figure of merit with three resolutions."""
+    if not rows:
+        return ('<p class="note">not run: no figure of merit at three resolutions in the verification results '
+                "(validate.py writes them from the nightly tier's runs).</p>")
+    head = ("<tr><th>#</th><th>figure of merit</th><th>h: S</th><th>convergence, p</th><th>S<sub>ext</sub></th>"
+            "<th>GCI<sub>fine</sub></th><th>asympt. ratio</th><th>u<sub>num</sub></th><th>D</th><th>u<sub>D</sub></th>"
+            "<th>u<sub>val</sub></th><th>E = S &minus; D</th><th>E &plusmn; 2u<sub>val</sub></th></tr>")
+    body, notes = [], []
+    for n, r in enumerate(rows, 1):
+        if r.get("error"):
+            body.append(f'<tr class="fail"><td>{n}</td><td>{escape(r["name"])}</td>'
+                        f'<td colspan="11" class="warn">{escape(r["error"])}</td></tr>')
+            continue
+        st = r["study"]
+        hs = "<br>".join(f"{h:.4g}: {v:.4g}" for h, v in zip(st["h"], st["phi"]))
+        kind = escape(st["kind"]) + ("" if st["p"] is None else f", p = {st['p']:.2f}")
+        cls = "" if r["zero_in_band"] in (None, True) else ' class="fail"'
+        band = "&mdash;" if r["band"] is None else (
+            f"[{r['band'][0]:.3g}, {r['band'][1]:.3g}]<br>"
+            + ('<span class="r-pass">holds 0</span>' if r["zero_in_band"] else '<span class="r-fail">excludes 0</span>'))
+        body.append(f"<tr{cls}><td>{n}</td><td>{escape(r['name'])}<br><span class=\"note\">{escape(r['test'])}</span></td>"
+                    f"<td class=\"num\">{hs}</td><td>{kind}</td><td>{_g(st['phi_ext'])}</td>"
+                    f"<td>{_g(st['gci_fine21'] and 100 * st['gci_fine21'], '{:.2g} %')}</td>"
+                    f"<td>{_g(st['asymptotic_ratio'], '{:.3g}')}</td>"
+                    f"<td>{_g(r['u_num'], '{:.3g}')}<br><span class=\"note\">{escape(r['u_num_basis'])}</span></td>"
+                    f"<td>{_g(r['D'])}</td><td>{_g(r['u_D'], '{:.3g}')}</td><td>{_g(r['u_val'], '{:.3g}')}</td>"
+                    f"<td>{_g(r['E'], '{:+.3g}')}</td><td>{band}</td></tr>")
+        notes.append(f"<li>#{n}: D: {escape(r['D_source'])}" + (f"; u<sub>D</sub>: {escape(r['u_D_source'])}"
+                                                                 if r["u_D_source"] else "") + "</li>")
+    u_input = sorted({r["u_input_source"] for r in rows if r.get("u_input_source")})
+    return ('<p>ASME V&amp;V 20-2009 with the numerical part from Celik et al. (2008): S the finest run, GCI with '
+            'F<sub>s</sub> = 1.25, u<sub>num</sub> = GCI/1.15 (oscillatory: at least half the data range; divergent: '
+            'the data range, no GCI), u<sub>val</sub> = (u<sub>num</sub>&sup2; + u<sub>input</sub>&sup2; + '
+            'u<sub>D</sub>&sup2;)<sup>1/2</sup>, k = 2 (about 95 % for a near-normal error). Asymptotic ratio: '
+            'GCI<sub>32</sub> / (r<sub>21</sub><sup>p</sup> GCI<sub>21</sub>), near 1 in the asymptotic range. '
+            'A band that excludes 0 is a model error this study resolves; one that holds it, an error below what '
+            'the uncertainties can separate.</p>'
+            f'<table class="vv20">{head}{"".join(body)}</table><ul class="note">{"".join(notes)}</ul>'
+            + "".join(f'<p class="note">u<sub>input</sub> = {escape(u)}.</p>' for u in u_input))
+
+
+def traceability(m: dict) -> str:
+    """Requirement -> criteria -> verdict (reports/traceability.py)."""
+    rows = []
+    for r in m["rows"]:
+        cls = {"FAIL": "fail", "PASS": "pass", "NOT RUN": "notrun", "NO RECORD": "notrun"}[r["verdict"]]
+        rcls = {"FAIL": "r-fail", "PASS": "r-pass", "NOT RUN": "r-notrun", "NO RECORD": "r-notrun"}[r["verdict"]]
+        rows.append(f'<tr class="{cls}" id="{escape(r["id"])}"><td class="{rcls}">{escape(r["verdict"])}</td>'
+                    f'<td class="num">{escape(r["id"])}</td><td>{escape(r["requirement"])}<br>'
+                    f'<span class="note">source: {escape(str(r["source"]))}</span></td>'
+                    f'<td class="num">{r["passed"]} / {r["failed"]} / {r["not_run"]}</td></tr>')
+    untraced = m.get("untraced") or []
+    warn = (f'<p class="warn">{len(untraced)} criteria trace to no requirement: '
+            + escape("; ".join(untraced[:10])) + (" ..." if len(untraced) > 10 else "") + "</p>") if untraced else ""
+    return ('<p class="note">Requirement IDs: validation/criteria.toml (each criterion) and '
+            'verification/requirements.toml (each test group). Criteria: passed / failed / not run. '
+            "NO RECORD: no result file of the group's tests reached the report (ctest runs them and decides them by "
+            "their exit code; they record no checks the report could re-check).</p>" + warn
+            + '<table class="trace"><tr><th>verdict</th><th>ID</th><th>requirement</th><th>criteria</th></tr>'
+            + "".join(rows) + "</table>")
+
+
+LOADED_ROW = ' class="notrun"'
+
+
+def history(h: dict) -> str:
+    """The results database's runs and the figures' trends (reports/history.py)."""
+    if not h:
+        return '<p class="note">not run.</p>'
+    where = (f"<code>{escape(h['path'])}</code>" if h.get("path")
+             else "none named (<code>--history FILE</code>): this run alone, not stored")
+    rows = "".join(
+        f"<tr{LOADED_ROW if e.get('loaded') else ''}><td>{k}</td><td>{escape(str(e.get('date')))}</td>"
+        f"<td><code>{escape(str(e.get('commit')))[:12]}</code></td><td>{escape(str(e.get('build_type')))}</td>"
+        f"<td>{escape(str(e.get('hostname')))}</td><td>{e.get('nproc')}</td>"
+        f"<td>{_g(e.get('load_start'), '{:.2f}')} / {_g(e.get('load_end'), '{:.2f}')}</td>"
+        f"<td>{'<b>loaded</b>' if e.get('loaded') else 'quiet'}</td><td>{escape(str(e.get('verdict')))}</td></tr>"
+        for k, e in enumerate(h.get("runs", [])))
+    trends = h.get("trends", [])
+    flagged = [t for t in trends if t["flagged"]]
+    ftable = "".join(f"<tr class='fail'><td>{escape(t['key'])}</td><td>{_g(t['mean'])}</td><td>{_g(t['noise'], '{:.3g}')}</td>"
+                     f"<td>{_g(t['latest'])}</td><td>{_g(t['change'], '{:+.3g}')}</td></tr>" for t in flagged)
+    parts = [f"<p>Database: {where}. A run is <b>loaded</b> when the 1-minute load average at its start or end "
+             "exceeds half the processor count (reports/history.py); its figures are drawn hollow and left out of "
+             "the noise. Noise of a figure: 3 standard deviations of its earlier quiet runs, at least a floor of "
+             "1e-9 relative (results are bitwise reproducible) or 20 % for wall times.</p>",
+             f'<table><tr><th>#</th><th>date</th><th>commit</th><th>build</th><th>host</th><th>nproc</th>'
+             f"<th>load start / end</th><th>machine</th><th>verdict</th></tr>{rows}</table>"]
+    parts += [f'<p class="warn">{escape(p)}</p>' for p in h.get("problems", [])]
+    if len(h.get("runs", [])) < 2:
+        parts.append('<p class="note">One stored run: no trend yet.</p>')
+    else:
+        parts.append(f"<p>{len(trends)} figures tracked over the stored runs; <b>{len(flagged)}</b> changed beyond "
+                     "their noise in the latest run.</p>")
+    if flagged:
+        parts.append("<table><tr><th>figure</th><th>earlier mean</th><th>noise</th><th>latest</th><th>change</th>"
+                     f"</tr>{ftable}</table>")
+    for t in trends:
+        if t.get("figure"):
+            parts.append(_fig(t["figure"], t["key"], "trend"))
     return "".join(parts)
 
 
@@ -161,7 +274,7 @@ def speed_accuracy(items: dict) -> str:
     parts = []
     for case, d in items.items():
         swept = any("outcome" in p for p in d["points"])  # stability-sweep points carry their outcome
-        rows = "".join(f"<tr><td>{escape(p['run'])}</td><td>{escape(p['method'])}</td><td>{_fmt(p['particles'])}</td>"
+        rows = "".join(f"<tr><td>{escape(p['run'])}</td><td>{escape(p['method']).replace(',', ',<wbr>')}</td><td>{_fmt(p['particles'])}</td>"
                        f"<td>{_fmt(p['wall_time_s'])}</td><td>{_fmt(p['error'])}</td>"
                        + (f"<td>{escape(str(p.get('outcome')))} {escape(str(p.get('cause') or ''))}</td>" if swept else "")
                        + "</tr>" for p in d["points"])
@@ -195,7 +308,10 @@ def performance(items: list) -> str:
         if b.get("error"):
             parts.append(f'<p class="warn">{escape(b["path"])}: {escape(b["error"])}</p>')
         elif b.get("figure"):
-            parts.append(f"<h3>{escape(str(b['title']))}</h3>" + _img(b["figure"], b["title"])
+            refs = [x for x in b["data"].get("series", []) if isinstance(x, dict) and x.get("recorded")]
+            recorded = "".join(f'<p class="note">{escape(str(x.get("label")))}: a recorded reference '
+                               f'({escape(str(x["recorded"]))}), not measured by this run.</p>' for x in refs)
+            parts.append(f"<h3>{escape(str(b['title']))}</h3>" + recorded + _img(b["figure"], b["title"])
                          + (f'<p class="note">{escape(str(b["source"]))}</p>' if b.get("source") else ""))
         else:
             rows = "".join("<tr>" + "".join(f"<td>{_fmt(r.get(k))}</td>" for k in b["columns"]) + "</tr>"
@@ -236,29 +352,3 @@ def paraview(item: dict | None) -> str:
             '(validation/paraview/open_in_paraview.py: every step\'s points, cells and arrays against the run '
             f'file).</p><table>{table}</table>{warn}' + _img(item.get("figure"), caption)
             + f'<p class="note">{escape(caption)}.</p>')
-
-
-def page(report: dict) -> str:
-    r = report
-    cases = "".join(case_section(c) for c in r["cases"]) or '<p class="note">not run: no run files.</p>'
-    return f"""<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>SPH V&amp;V report</title><style>{STYLE}</style></head>
-<body>
-<h1>SPH verification &amp; validation report</h1>
-{banner(r['counts'], r['problems'])}
-<p class="note">runs: <code>{escape(r['inputs']['runs'])}</code> ({r['inputs']['run_files']} files) &middot;
-results: <code>{escape(r['inputs']['results'])}</code> ({r['inputs']['result_files']} files) &middot;
-criteria: <code>{escape(r['inputs']['criteria'])}</code> &middot; generated {escape(r['generated'])}.
-Also: <a href="summary.json">summary.json</a>, <a href="junit.xml">junit.xml</a>.</p>
-<section><h2>Criteria</h2>{case_tally(r['criteria'])}{summary_table(r['criteria'])}</section>
-<section><h2>Environment</h2>{environment(r['environment'])}</section>
-<section><h2>Validation cases</h2>{cases}</section>
-<section><h2>Convergence (verification)</h2>{convergence(r['convergence'])}</section>
-<section><h2>Recorded figures (verification)</h2>{figures(r['figures'])}</section>
-<section><h2>Recorded histories (verification)</h2>{histories(r.get('histories', []))}</section>
-<section><h2>Speed versus accuracy</h2>{speed_accuracy(r['speed_accuracy'])}</section>
-<section><h2>Stability map</h2>{stability(r['stability'])}</section>
-<section><h2>Performance</h2>{performance(r['performance'])}</section>
-<section><h2>The run file in ParaView</h2>{paraview(r.get('paraview'))}</section>
-</body></html>
-"""

@@ -203,7 +203,7 @@ def read_json_dir(directory: Path | None) -> list:
     return out
 
 
-_RESOLUTION_SUFFIX = re.compile(r"_(dx|h|n|res)[0-9][0-9.eE+-]*$")
+_RESOLUTION_SUFFIX = re.compile(r"_(dx|h|n|res|a)[0-9][0-9.eE+-]*$")  # a: Martin & Moyce's a/dx
 
 
 def family(scene_name: str, known=()) -> str:

@@ -26,7 +26,10 @@ sys.path.insert(0, str(HERE))
 import analysis  # noqa: E402
 import paraview_view  # noqa: E402
 import plots  # noqa: E402
-import report_html  # noqa: E402
+import history  # noqa: E402
+import report_site  # noqa: E402
+import traceability  # noqa: E402
+import uncertainty  # noqa: E402
 from criteria import DEFAULT_CRITERIA, NOT_RUN, collect, counts, load_criteria  # noqa: E402
 from runfile import family, read_json_dir, read_results, read_runs  # noqa: E402
 
@@ -128,6 +131,25 @@ def perf_items(directory, out: Path, quick: bool) -> list:
     return items
 
 
+TRENDS_DRAWN = 12  # trend figures on the history page: the flagged ones first, then the V&V 20 errors
+
+
+def run_history(path, report: dict, load_start: float, out: Path, quick: bool) -> dict:
+    """Append this run to the results database (when one is named) and reduce its trends."""
+    this = history.record(report, load_start, history.load_average())
+    entries, problems = history.read(path)
+    entries.append(this)
+    if path is not None:
+        history.append(path, this)
+    trends = history.trends(entries)
+    drawn = [t for t in trends if t["flagged"]] + [t for t in trends if not t["flagged"] and t["key"].startswith("V&V")]
+    for k, t in enumerate(drawn[:TRENDS_DRAWN]):
+        t["figure"] = _figure(problems, "trend", plots.trend, t, entries, out, k, quick)
+    return {"path": str(path) if path else None, "this": {k: v for k, v in this.items() if k != "figures"},
+            "entries": entries, "trends": trends, "problems": problems,
+            "runs": [{k: v for k, v in e.items() if k != "figures"} for e in entries]}
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", type=Path, required=True, help="directory searched recursively for *.h5 run files")
@@ -137,9 +159,16 @@ def main(argv=None) -> int:
     ap.add_argument("--perf", type=Path, help="directory of performance *.json results")
     ap.add_argument("--stability", type=Path, help="directory of stability-sweep *.json results")
     ap.add_argument("--criteria", type=Path, default=DEFAULT_CRITERIA, help="criteria TOML")
+    ap.add_argument("--requirements", type=Path, default=traceability.DEFAULT_REQUIREMENTS,
+                    help="requirements of the verification groups (traceability matrix)")
+    ap.add_argument("--history", type=Path, help="results database (JSON lines) this run appends to, and whose "
+                                                  "trends the report shows (scripts/vv-report.sh: the build tree's)")
+    ap.add_argument("--load-start", type=float, help="1-minute load average when the tests started (default: when "
+                                                     "the report starts)")
     ap.add_argument("--paraview", type=Path, help="directory of paraview.json and its picture (the dam break "
                                                    "opened in pvpython, validation/paraview)")
     args = ap.parse_args(argv)
+    load_start = history.load_average() if args.load_start is None else args.load_start
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
 
@@ -160,11 +189,15 @@ def main(argv=None) -> int:
     for k, entry in enumerate(conv):
         notes = []
         entry["figure"] = _figure(notes, "convergence", plots.convergence, entry, out, k, args.quick)
+    vv20 = uncertainty.table(results)
+    for k, row in enumerate(vv20):
+        if not row.get("error"):
+            row["figure"] = _figure([], "V&V 20", plots.vv20, row, out, k, args.quick)
     hist = analysis.recorded_histories(results)
     for k, group in enumerate(hist):
         group["figure"] = _figure([], "history", plots.history, group, out, k, args.quick)
     stability = stability_items(args.stability, out, args.quick)
-    speed = analysis.speed_accuracy(runs, table)
+    speed = analysis.speed_accuracy(runs)
     speed.update(analysis.sweep_speed_accuracy([s for s in stability if not s.get("error")]))
     for case, data in speed.items():
         data["figure"] = _figure([], "speed/accuracy", plots.speed_accuracy, case, data, out, args.quick)
@@ -178,20 +211,26 @@ def main(argv=None) -> int:
         "counts": tally, "problems": problems, "criteria": found,
         "environment": analysis.environment(runs),
         "cases": case_pages(runs, found, table, out, args.quick),
-        "convergence": conv, "speed_accuracy": speed, "figures": analysis.recorded_figures(results),
+        "traceability": traceability.matrix(found, table, traceability.load_requirements(args.requirements)),
+        "convergence": conv, "uncertainty": vv20, "speed_accuracy": speed, "figures": analysis.recorded_figures(results),
         "histories": hist, "stability": stability,
         "performance": perf_items(args.perf, out, args.quick),
         "paraview": paraview_view.read(args.paraview, out),
     }
-    (out / "index.html").write_text(report_html.page(report), encoding="utf-8")
-    summary = {k: report[k] for k in ("generated", "inputs", "counts", "problems", "environment", "convergence",
-                                      "speed_accuracy", "figures", "paraview")}
+    word = "FAIL" if tally["failed"] or problems else ("PASS" if tally["passed"] else "NOT RUN")
+    report["verdict"] = word
+    report["history"] = run_history(args.history, report, load_start, out, args.quick)
+    for name, html in report_site.pages(report).items():
+        (out / name).write_text(html, encoding="utf-8")
+    summary = {k: report[k] for k in ("generated", "verdict", "inputs", "counts", "problems", "environment",
+                                      "convergence", "uncertainty", "traceability", "speed_accuracy", "figures",
+                                      "paraview")}
+    summary["history"] = {k: v for k, v in report["history"].items() if k != "entries"}
     summary["criteria"] = [c.as_dict() for c in found]
     summary["stability"] = [{k: v for k, v in s.items() if k != "points"} for s in report["stability"]]
     summary["performance"] = [{k: v for k, v in p.items() if k not in ("data", "rows")} for p in report["performance"]]
     (out / "summary.json").write_text(json.dumps(summary, indent=1, default=str), encoding="utf-8")
 
-    word = "FAIL" if tally["failed"] or problems else ("PASS" if tally["passed"] else "NOT RUN")
     print(f"{word}: {tally['passed']} passed, {tally['failed']} failed, {tally['not_run']} not run"
           f" -> {out / 'index.html'}")
     for p in problems:

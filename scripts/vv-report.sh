@@ -19,6 +19,7 @@ scripts/build.sh || exit 1
 build=build/release
 rm -rf "$build/runs" "$build/matrix-rows" "$build/results" "$build/stability" "$build/paraview"
 start=$(date +%s)
+load_start=$(cut -d' ' -f1 /proc/loadavg)  # the report marks a run on a loaded machine (reports/history.py)
 ctest --test-dir "$build" -L "$tier" --output-on-failure -j2 --output-junit ctest-junit.xml
 tests=$?
 echo "tests took $(( $(date +%s) - start )) s"
@@ -27,15 +28,14 @@ extra=()
 [ -d "$build/stability" ] && extra+=(--stability "$build/stability")
 [ -d "$build/paraview" ] && extra+=(--paraview "$build/paraview")
 /usr/bin/python3 reports/vv_report.py --runs "$build/runs" --results "$build/results" \
-  --out reports/out "${report_flags[@]}" "${extra[@]}"
+  --out reports/out --history "$build/vv-history.jsonl" --load-start "$load_start" \
+  "${report_flags[@]}" "${extra[@]}"
 report=$?
 if [ "$tier" != "quick" ]; then
-  # The report as a reader sees it: rendered by headless Chromium, images checked, and a screenshot.
-  REPORT_DIR=reports/out /usr/bin/python3 -m pytest -q -p no:cacheprovider reports/browser || report=1
-  chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
-    --disable-background-networking --disable-component-update --disable-sync --hide-scrollbars \
-    --user-data-dir="$(mktemp -d)" --screenshot="$PWD/reports/out/screenshot.png" \
-    --window-size=1280,1800 "file://$PWD/reports/out/index.html" >/dev/null 2>&1
+  # The report as a reader sees it: every page rendered by headless Chromium at 1280 px, no page wider than the
+  # window, no image that fails to load, a screenshot of each page (reports/browser/render.py).
+  REPORT_DIR=reports/out SCREENSHOT_DIR=reports/out/screenshots \
+    /usr/bin/python3 -m pytest -q -p no:cacheprovider reports/browser || report=1
 fi
 echo "report: reports/out/index.html (tests exit $tests, report exit $report)"
 [ $tests -eq 0 ] && [ $report -eq 0 ]

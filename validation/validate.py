@@ -52,10 +52,28 @@ GUARDS = {
 
 # ----------------------------------------------------------------------------------------------------------------
 # Checks and the results file
+# u_input of every comparison (ASME V&V 20 section 6): the scenes take the experiments' geometry, g and rho0, which
+# the experiments state without an uncertainty, and c0, h/dx and the viscosities are numerical choices, not inputs
+# of the physical system. No input uncertainty is propagated: 0, and the table says so.
+U_INPUT_NOTE = "0: the experiments state H, g, rho0 without an uncertainty; c0, h/dx, viscosities are numerical choices"
+NORMAL_95 = 1.96  # half width of a normal distribution's 2.5-97.5 % interval in standard deviations
+
+
 class Results:
     def __init__(self, case: str):
         self.case = case
-        self.checks, self.convergence, self.rows = [], [], []
+        self.checks, self.convergence, self.rows, self.comparisons = [], [], [], []
+
+    def compare(self, name: str, unit: str, x_label: str, pts: list, D, u_D, D_source: str, u_D_source: str):
+        """A figure of merit S at three resolutions against D +- u_D (reports/uncertainty.py: GCI and V&V 20).
+        `pts` is [(h, S)]; the three finest are kept, and fewer than three give no entry."""
+        pts = sorted((float(h), float(v)) for h, v in pts if v is not None and math.isfinite(v))[:3]
+        if len(pts) < 3:
+            return
+        self.comparisons.append({"name": name, "unit": unit, "x_label": x_label, "h": [p[0] for p in pts],
+                                 "S": [p[1] for p in pts], "D": None if D is None else float(D),
+                                 "u_D": None if u_D is None else float(u_D), "D_source": D_source,
+                                 "u_D_source": u_D_source, "u_input": 0.0, "u_input_source": U_INPUT_NOTE})
 
     def check(self, run: str, name: str, measured: float, comparison: str, threshold: float, source: str,
               key: str = "") -> bool:
@@ -85,7 +103,7 @@ class Results:
     def write(self, directory: Path) -> bool:
         directory.mkdir(parents=True, exist_ok=True)
         data = {"test": f"validation.{self.case}", "issue": 4, "checks": self.checks,
-                "convergence": self.convergence, "runs": self.rows}
+                "convergence": self.convergence, "comparisons": self.comparisons, "runs": self.rows}
         (directory / f"validation.{self.case}.json").write_text(json.dumps(data, indent=1, allow_nan=True))
         for r in self.rows:
             print("  ".join(f"{k}={_fmt(v)}" for k, v in r.items()))
@@ -145,6 +163,7 @@ def dam_break(res: Results, runs: list):
     exp = references.load("lobovsky_2014_sensor2")
     et = exp["t_star"]
     onset_exp = float(et[np.argmax(exp["p_star_median"] > 0.1)])
+    onset_band = [float(et[np.argmax(exp[c] > 0.1)]) for c in ("p_star_p97.5", "p_star_p2.5")]  # early, late
     band = [pressure_impulse(et, exp[c]) for c in ("p_star_p2.5", "p_star_median", "p_star_p97.5")]
     study = {}
     for run in runs:
@@ -194,7 +213,23 @@ def dam_break(res: Results, runs: list):
         src = "Lobovsky et al. 2014 (H = 0.3 m), sensor 2 and gauges" if geometry == "lobovsky" else \
             "paper geometry (Colagrossi & Landrini), against Lobovsky et al. 2014 sensor 2 onset"
         res.study(f"dam break ({geometry}): impact time error", "dx / H", x, [f["onset_rel_error"] for _, f in pts], src)
+        ud_onset = (onset_band[1] - onset_band[0]) / (2 * NORMAL_95)
+        res.compare(f"dam break ({geometry}): wall impact time t*", "-", "dx / H",
+                    [(h, f["onset_t_star"]) for h, f in pts], onset_exp, ud_onset,
+                    "Lobovsky et al. 2014 sensor 2 median, first p* > 0.1",
+                    f"(t*(2.5 %) - t*(97.5 %)) / (2 x 1.96) = ({onset_band[1]:.3f} - {onset_band[0]:.3f}) / 3.92: the "
+                    "percentile curves' crossings read as the onset's 95 % interval")
         if geometry == "lobovsky":
+            res.compare("dam break (lobovsky): sensor-2 impulse int p* dt*, t* in [2, 6]", "-", "dx / H",
+                        [(h, f.get("impulse")) for h, f in pts], band[1], (band[2] - band[0]) / (2 * NORMAL_95),
+                        "Lobovsky et al. 2014 sensor 2, impulse of the median curve",
+                        "(impulse of the 97.5 % curve - of the 2.5 % curve) / 3.92: the pointwise band's impulses "
+                        "read as the impulse's 95 % interval (an approximation: percentiles do not add)")
+            peak_band = [float(exp[c].max()) for c in ("p_star_p2.5", "p_star_p97.5")]
+            res.compare("dam break (lobovsky): sensor-2 peak p*, t* in [2, 6]", "-", "dx / H",
+                        [(h, f.get("peak_p_star")) for h, f in pts], float(exp["p_star_median"].max()),
+                        (peak_band[1] - peak_band[0]) / (2 * NORMAL_95), "Lobovsky et al. 2014 sensor 2, median peak",
+                        "(peak of the 97.5 % curve - peak of the 2.5 % curve) / 3.92 (the same approximation)")
             res.study("dam break (lobovsky): sensor-2 impulse error vs median", "dx / H", x,
                       [f.get("impulse_rel_error") for _, f in pts], src)
             for g in ("H1", "H2", "H3", "H4"):
@@ -204,6 +239,22 @@ def dam_break(res: Results, runs: list):
 
 # ----------------------------------------------------------------------------------------------------------------
 # Martin & Moyce (1952) column, n^2 = 2
+# The stations of the V&V 20 comparisons: Z = 3 is a station of MM's front table (T = 2.51) inside K&O's range,
+# tau = 2 one of their height table (h/2a = 0.50), both mid-way through the collapse.
+Z_STATION, TAU_STATION = 3.0, 2.0
+
+
+def first_crossing(t, z, level: float) -> float:
+    """The first t at which z reaches `level`, linear between the samples around it; nan if it never does."""
+    t, z = np.asarray(t, dtype=float), np.asarray(z, dtype=float)
+    above = np.nonzero(z >= level)[0]
+    if above.size == 0:
+        return float("nan")
+    i = int(above[0])
+    if i == 0:
+        return float(t[0])
+    return float(t[i - 1] + (level - z[i - 1]) * (t[i] - t[i - 1]) / (z[i] - z[i - 1]))
+
 def martin_moyce(res: Results, runs: list):
     mm_f = references.load("martin_moyce_1952_front")
     ko_f = references.load("koshizuka_oka_1996_front")
@@ -237,14 +288,27 @@ def martin_moyce(res: Results, runs: list):
         res.check(run.scene_name, "residual height RMS(h/2a - H_MM) over MM's table", e_h, "<=", 1 / 18,
                   "Martin & Moyce 1952 tables 2/6 (height stations 1/18 apart)", "height")
         Zfit = np.interp(mm_f["T"], T, Z) - mm_f["Z"]
+        t_z3, h_tau2 = first_crossing(T, Z, Z_STATION), float(np.interp(TAU_STATION, tau, Hh))
         res.row(run, a_over_dx=a / dx, volume_variation=run.metrics["max_volume_variation"], rms_front_MM=e_mm,
-                rms_front_KO=e_ko, rms_height_MM=e_h, mean_front_lead_MM=float(np.mean(Zfit)), spread_KO_MM=spread)
-        pts.append((dx / a, e_mm, e_ko, e_h))
+                rms_front_KO=e_ko, rms_height_MM=e_h, mean_front_lead_MM=float(np.mean(Zfit)), spread_KO_MM=spread,
+                T_at_Z3=t_z3, height_at_tau2=h_tau2)
+        pts.append((dx / a, e_mm, e_ko, e_h, t_z3, h_tau2))
     pts.sort()
     x = [p[0] for p in pts]
     res.study("Martin & Moyce: front RMS vs MM", "dx / a", x, [p[1] for p in pts], "Martin & Moyce 1952")
     res.study("Martin & Moyce: front RMS vs K&O", "dx / a", x, [p[2] for p in pts], "Koshizuka & Oka 1996")
     res.study("Martin & Moyce: height RMS vs MM", "dx / a", x, [p[3] for p in pts], "Martin & Moyce 1952")
+    t_mm, t_ko = first_crossing(mm_f["T"], mm_f["Z"], Z_STATION), first_crossing(ko_f["T"], ko_f["Z"], Z_STATION)
+    res.compare(f"Martin & Moyce: time T at which the front passes Z = {Z_STATION:g}", "-", "dx / a",
+                [(p[0], p[4]) for p in pts], t_mm, abs(t_ko - t_mm) / math.sqrt(2),
+                f"Martin & Moyce 1952 tables 2/6: T = {t_mm:.3f} at Z = {Z_STATION:g}",
+                f"|T_K&O - T_MM| / sqrt 2 = |{t_ko:.3f} - {t_mm:.3f}| / 1.414: the standard deviation of the two "
+                "experiments of the same shape (Koshizuka & Oka 1996)")
+    h_mm = float(np.interp(TAU_STATION, mm_h["tau"], mm_h["H"]))
+    res.compare(f"Martin & Moyce: residual height h/2a at tau = {TAU_STATION:g}", "-", "dx / a",
+                [(p[0], p[5]) for p in pts], h_mm, (1 / 18) / math.sqrt(12),
+                f"Martin & Moyce 1952 tables 2/6: h/2a = {h_mm:.3f} at tau = {TAU_STATION:g}",
+                "(1/18) / sqrt 12: the table's height stations are 1/18 apart, read as a uniform reading error")
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -292,6 +356,8 @@ def drop_into_pool(res: Results, runs: list):
                 crown_top_at_0_033=crown, t_crown=frame.time)
         pts.append((dx, crown))
     pts.sort()
+    res.compare(f"drop: crown top y at {CROWN_FRAME_T} s", "m", "dx [m]", pts, None, None,
+                "no experiment for this case: numerical uncertainty only", "")
     if len(pts) >= 3:
         finest = pts[0][1]
         res.study(f"drop: crown top at {CROWN_FRAME_T} s, difference to the finest run", "dx [m]",
@@ -379,6 +445,11 @@ def two_fluids(res: Results, runs: list):
         x = [p[1] for p in sel]
         if pair[1] / pair[0] < 1.1:
             for which in ("heavy", "light"):
+                res.compare(f"lock exchange {pair[0]:g}/{pair[1]:g}: {which} front Froude number U / sqrt(g'H)", "-",
+                            "dx / H", [(p[1], p[2][f"Fr_{which}"]) for p in sel], 0.5, 0.0,
+                            "Benjamin 1968: U = 0.5 sqrt(g'H) (theory, inviscid)",
+                            "0: a theory, not a measurement (experiments at this Re run 5-10 % slower, Shin et al. "
+                            "2004: model form, not u_D)")
                 res.study(f"lock exchange {pair[0]:g}/{pair[1]:g}: {which} front speed error vs 0.5 sqrt(g'H)",
                           "dx / H", x, [p[2][f"err_{which}"] for p in sel], "Benjamin 1968 / Shin et al. 2004")
 

@@ -11,6 +11,7 @@ import pytest
 
 import analysis
 import criteria
+import history
 import references
 import vv_report
 from conftest import GRAVITY
@@ -31,8 +32,14 @@ def report(tmp_path, runs, results=None, *extra):
     return rc, out, summary
 
 
+def site_html(out):
+    """Every page of the report, index first (reports/report_site.py)."""
+    pages = sorted(out.glob("*.html"), key=lambda p: (p.name != "index.html", p.name))
+    return "".join(p.read_text() for p in pages)
+
+
 def images_exist(out):
-    html = (out / "index.html").read_text()
+    html = site_html(out)
     names = re.findall(r'<img src="([^"]+)"', html)
     for name in names:
         assert (out / name).is_file(), name
@@ -70,7 +77,7 @@ def test_unstable_run_fails_and_exits_nonzero(tmp_path, make_run):
     assert status["outcome"] == "fail" and "nan" in status["message"]
     assert summary["counts"]["failed"] == 1
     assert summary["criteria"][0]["outcome"] == "fail"  # failures first
-    assert "FAIL" in (out / "index.html").read_text()
+    assert "FAIL" in (out / "index.html").read_text()  # the verdict is on the index
 
 
 def test_criterion_failure_exits_nonzero(tmp_path, make_run):
@@ -315,6 +322,86 @@ def test_paraview_section_shows_what_pvpython_found(tmp_path):
 def test_paraview_directory_without_its_file_is_a_warning(tmp_path):
     (tmp_path / "empty").mkdir()
     rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--paraview", str(tmp_path / "empty"))
-    assert "paraview.json: not read" in (out / "index.html").read_text()
+    assert "paraview.json: not read" in (out / "provenance.html").read_text()
     assert "not run: no --paraview directory" in report(tmp_path, tmp_path / "runs")[1].joinpath(
-        "index.html").read_text()
+        "provenance.html").read_text()
+
+
+def test_history_appends_each_run_and_flags_a_change(tmp_path, make_run):
+    db = tmp_path / "build" / "vv-history.jsonl"
+    for k, dv in enumerate((0.001, 0.001, 0.0015)):
+        make_run(tmp_path / "runs" / "dam_break.h5", "dam_break", max_volume_variation=dv)
+        rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--history", str(db),
+                                  "--load-start", "1000" if k == 1 else "0")
+    lines = db.read_text().splitlines()
+    assert len(lines) == 3
+    runs = [json.loads(x) for x in lines]
+    assert runs[1]["loaded"] and runs[1]["load_start"] == 1000  # 1000 > nproc / 2
+    # The others' end load is the machine's own at the time: their mark follows from what they stored.
+    assert all(r["loaded"] == history.loaded(r["load_start"], r["load_end"], r["nproc"]) for r in runs)
+    assert history.loaded(0.5, 0.9, 2) is False and history.loaded(0.5, 1.1, 2) is True
+    assert {"commit", "build_type", "hostname", "nproc", "load_start", "load_end"} <= set(runs[0])
+    trends = {t["key"]: t for t in summary["history"]["trends"]}
+    vv = trends["dam_break | max_volume_variation"]
+    assert vv["flagged"] and vv["values"] == [0.001, 0.001, 0.0015]
+    assert not trends["wall time [s] | dam_break"]["flagged"]  # 12.5 s each time: within its 20 % floor
+    html = (out / "history.html").read_text()
+    assert "loaded" in html and "changed beyond" in html
+    _, names = images_exist(out)
+    assert any(n.startswith("trend-") for n in names)
+
+
+def test_vv20_comparison_in_table_and_figure(tmp_path, make_result):
+    path = make_result(tmp_path / "results" / "validation.dam_break.json", test="validation.dam_break",
+                       convergence=False)
+    data = json.loads(path.read_text())
+    data["comparisons"] = [{"name": "impact time t*", "unit": "-", "x_label": "dx / H", "h": [0.02, 0.01, 0.005],
+                            "S": [2.30, 2.34, 2.35], "D": 2.46, "u_D": 0.0153, "D_source": "Lobovsky median",
+                            "u_D_source": "percentiles", "u_input": 0.0, "u_input_source": "0: none stated"}]
+    path.write_text(json.dumps(data))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", tmp_path / "results")
+    (row,) = summary["uncertainty"]
+    assert row["study"]["kind"] == "monotonic" and row["study"]["p"] > 0
+    npt.assert_allclose(row["E"], 2.35 - 2.46, rtol=0, atol=1e-12)
+    html, names = images_exist(out)
+    assert row["figure"] in names
+    page = (out / "validation.html").read_text()
+    assert "GCI<sub>fine</sub>" in page and "excludes 0" in page
+
+
+def test_convergence_plot_carries_its_order_criterion(tmp_path, make_result):
+    path = make_result(tmp_path / "results" / "Operators.Order.json", test="Operators.Order")
+    data = json.loads(path.read_text())
+    data["checks"].append({"name": "Poiseuille observed order", "measured": 1.2, "threshold": 1.8,
+                           "comparison": ">=", "source": "theory 2", "pass": False})
+    path.write_text(json.dumps(data))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", tmp_path / "results")
+    (entry,) = summary["convergence"]
+    assert entry["criterion"]["name"] == "Poiseuille observed order" and entry["criterion"]["pass"] is False
+    assert 'class="r-fail">FAIL</span> criterion' in (out / "verification.html").read_text()
+
+
+def test_every_page_has_the_navigation_and_figures_have_anchors(tmp_path, make_run):
+    make_run(tmp_path / "runs" / "dam_break.h5", "dam_break")
+    rc, out, summary = report(tmp_path, tmp_path / "runs")
+    pages = sorted(p.name for p in out.glob("*.html"))
+    assert len(pages) == 11
+    for p in pages:
+        html = (out / p).read_text()
+        assert all(f'href="{q}"' in html for q in pages), p
+    val = (out / "validation.html").read_text()
+    ids = re.findall(r'<figure id="([^"]+)"', val)
+    assert ids and all(f'href="#{i}"' in val for i in ids)
+
+
+def test_a_recorded_peer_series_is_shown_as_a_dated_reference(tmp_path):
+    (tmp_path / "perf").mkdir()
+    (tmp_path / "perf" / "db.json").write_text(json.dumps(
+        {"benchmark": "dam break", "x_label": "particles", "y_label": "wall time [s]",
+         "series": [{"label": "ours, 2 thread(s)", "x": [1250, 5000], "y": [2.5, 13.0]},
+                    {"label": "DualSPHysics 5.4, 2 threads", "x": [1484, 5467], "y": [5.2, 57.5],
+                     "recorded": "issue 7's table, 2026-11-23"}]}))
+    rc, out, summary = report(tmp_path, tmp_path / "runs", None, "--perf", str(tmp_path / "perf"))
+    page = (out / "performance.html").read_text()
+    assert "a recorded reference (issue 7&#x27;s table, 2026-11-23), not measured by this run" in page
+    assert "This run: load average" in page
