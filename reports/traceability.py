@@ -19,7 +19,7 @@ DEFAULT_REQUIREMENTS = ROOT / "verification" / "requirements.toml"
 STATUS_REQUIREMENT = {"id": "VAL-RUN-1", "requirement": "The solver shall run every validation scene to its end time "
                       "without a numerical failure (run file status stable).", "source": "reports/SCHEMA.md, status"}
 ID_PATTERN = re.compile(r"^(VER|VAL)-[A-Z]{2,4}-[0-9]+$")
-VALIDATION_CASES = ("dam_break", "martin_moyce", "drop_into_pool", "two_fluids")
+VALIDATION_CASES = ("dam_break", "martin_moyce", "drop_into_pool", "two_fluids", "spheric_dam_break")
 
 
 def load_requirements(path: Path = DEFAULT_REQUIREMENTS) -> list:

@@ -62,7 +62,7 @@ def test_a_bad_matrix_names_the_entry_and_key(tmp_path, text, words):
 def test_to_ctest_writes_one_call_a_run_recover_and_check(tmp_path):
     m = matrix.load()
     text = to_ctest.cmake_text(m)
-    assert text.count("sph_matrix_run(") == len(m.runs) == 18
+    assert text.count("sph_matrix_run(") == len(m.runs) > 0
     assert "sph_matrix_run(dam_break quick" not in text and "sph_matrix_run(dam_break nightly 1500 2)" in text
     assert text.count("sph_validation_recover(") == sum(1 for r in m.runs if r.recover_timeout_s)
     assert "sph_validation_check(two_fluids_quick two_fluids quick two_fluids_dx0.003 two_fluids_rho1050_dx0.006)" \
@@ -128,7 +128,7 @@ def test_dry_run_writes_one_array_over_the_selection_and_a_gather_job(tmp_path):
 def test_resubmit_takes_only_the_failed_and_the_missing_runs(tmp_path):
     assert submit("--out", tmp_path, "--tier", "quick", "--dry-run").returncode == 0
     quick = matrix.load().select(["quick"])
-    for k, r in enumerate(quick[:4]):  # four done, one failed, one without a row
+    for k, r in enumerate(quick[:4]):  # four done, one failed, the rest without a row
         (tmp_path / "runs" / "quick").mkdir(parents=True, exist_ok=True)
         (tmp_path / "runs" / "quick" / f"{r.name}.h5").write_text("")
     (tmp_path / "rows").mkdir()
@@ -136,8 +136,9 @@ def test_resubmit_takes_only_the_failed_and_the_missing_runs(tmp_path):
         (tmp_path / "rows" / f"{r.name}.json").write_text(json.dumps({"run": r.name, "exit_code": code}))
     done = submit("--out", tmp_path, "--resubmit", "--dry-run")
     assert done.returncode == 0, done.stderr
-    assert (tmp_path / "slurm" / "submit-2" / "names-t2.txt").read_text().split() == [quick[4].name, quick[5].name]
-    assert "#SBATCH --array=0-1" in (tmp_path / "slurm" / "submit-2" / "array-t2.sbatch").read_text()
+    again = [r.name for r in quick[4:]]  # the failed one and those without a row
+    assert (tmp_path / "slurm" / "submit-2" / "names-t2.txt").read_text().split() == again
+    assert f"#SBATCH --array=0-{len(again) - 1}" in (tmp_path / "slurm" / "submit-2" / "array-t2.sbatch").read_text()
     # the gather job still gathers the whole selection
     assert all(f"--run {r.name}" in (tmp_path / "slurm" / "submit-2" / "gather.sbatch").read_text() for r in quick)
 
