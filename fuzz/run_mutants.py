@@ -14,7 +14,7 @@ seconds. A mutant changes one to three lines of its seed: a number replaced by a
 number, a value made a string or an array, a line deleted or duplicated, a table renamed. `sph
 check --max-steps` refuses a mutant whose estimated steps exceed the cap, so that what runs stays
 short; the run's time limit is far above what such a run takes (CHECK_LIMIT_S, RUN_LIMIT_S).
-Prints the counts and writes them as JSON (fuzz.run_mutants.json) for the report; a crash or a hang
+Prints the counts and writes them as a verification result (Fuzz.RunMutants.json) for the report; a crash or a hang
 is copied to --keep and fails the driver.
 """
 import argparse
@@ -27,6 +27,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
+
+import fuzz_result
 
 SOURCE = pathlib.Path(__file__).resolve().parent.parent
 SEEDS = sorted(list((SOURCE / "validation" / "scenes").glob("*.toml")) +
@@ -174,8 +176,10 @@ def main():
     print(json.dumps(counts, indent=1))
     if a.results:
         a.results.mkdir(parents=True, exist_ok=True)
-        name = "replay" if a.replay else "run_mutants"
-        (a.results / f"fuzz.{name}.json").write_text(json.dumps(counts))
+        name = "Replay" if a.replay else "RunMutants"
+        (a.results / f"Fuzz.{name}.json").write_text(json.dumps(fuzz_result.result(
+            f"Fuzz.{name}", "accepted mutants through sph run", counts["ran"], 0 if a.replay else a.runs,
+            counts["crashes"], counts["hangs"], counts)))
     if not a.replay and counts["ran"] < a.runs:
         print(f"only {counts['ran']} of {a.runs} mutants were accepted", file=sys.stderr)
         return 1
