@@ -100,6 +100,10 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
       advance_ = &Simulation::advanceWith<integrators::PositionVerlet>;
       break;
   }
+  // No default: -Wswitch names an enumerator missing above; any other value is a bug.
+  if (!advance_)
+    throw std::logic_error("Simulation: unknown time integrator " +
+                           std::to_string(static_cast<int>(scene.integrator)));
   id_.resize(y_.size());
   std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)
