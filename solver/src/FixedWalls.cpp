@@ -11,7 +11,9 @@ namespace sph {
 template <int D>
 FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, double V0, double h, KernelKind kernel,
                           const Phase& phase, const Vec<D>& g)
-    : x_(std::move(position)), V0_(V0), h_(h), kernel_(kernel), phase_(phase), g_(g) {}
+    : x_(std::move(position)), V0_(V0), h_(h), kernel_(kernel), phase_(phase), g_(g) {
+  frameTheWalls();
+}
 
 template <int D>
 FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, std::vector<WallVelocityRule<D>> velocity,
@@ -26,6 +28,19 @@ FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, std::vector<WallVelocity
       g_(g) {
   if (velocity_.size() != x_.size() || volume_.size() != x_.size())
     throw std::logic_error("FixedWalls: one velocity rule and one volume per wall particle");
+  frameTheWalls();
+}
+
+template <int D>
+void FixedWalls<D>::frameTheWalls() {
+  const double reach = 2.0 * h_;
+  frame_.points = std::max<std::size_t>(x_.size(), 1);
+  for (const Vec<D>& x : x_)
+    for (int a = 0; a < D; ++a)
+      frame_.box.lo[a] = std::min(frame_.box.lo[a], x[a] - reach),
+      frame_.box.hi[a] = std::max(frame_.box.hi[a], x[a] + reach);
+  if (x_.empty())
+    for (int a = 0; a < D; ++a) frame_.box.lo[a] = 0.0, frame_.box.hi[a] = 0.0;
 }
 
 template <int D>
@@ -35,8 +50,10 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
   const double reach = 2.0 * h_, reach2 = reach * reach;  // lambda h, lambda = 2 for every kernel
   // The fluid and its periodic images into cells of side `reach`: a wall particle's neighbours
   // lie in the cells around its own.
+  // (a fluid entry beyond the frame falls in its edge cell, out of every wall particle's reach)
   cells_.build(
-      base, [&](std::size_t f, int a) { return set.x[f][a]; }, reach);
+      base, [&](std::size_t f, int a) { return set.x[f][a]; }, frame_.box, reach, 4, base,
+      typename CellList<D>::EvenLayers{}, &frame_);
   const auto& order = cells_.order();
   set.resize(base + static_cast<std::size_t>(nWall));
   const bool moving = !velocity_.empty(), ownVolumes = !volume_.empty();

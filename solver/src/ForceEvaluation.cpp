@@ -70,10 +70,26 @@ void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>
 }
 
 template <int D>
-void ForceEvaluation<D>::cellOrder(std::size_t count, std::vector<int>& out) const {
+void ForceEvaluation<D>::cellOrder(std::size_t count, std::vector<int>& out,
+                                   std::vector<std::int64_t>* cells) const {
   out.clear();
-  for (const int s : work_->cells.order())
-    if (static_cast<std::size_t>(s) < count) out.push_back(s);
+  if (cells) cells->clear();
+  const auto& order = work_->cells.order();
+  for (std::size_t k = 0; k < order.size(); ++k)
+    if (static_cast<std::size_t>(order[k]) < count) {
+      out.push_back(order[k]);
+      if (cells) cells->push_back(work_->cells.frameCell(static_cast<int>(k)));
+    }
+}
+
+template <int D>
+void ForceEvaluation<D>::frameGrid(const double (&lo)[D], const double (&hi)[D],
+                                   std::size_t entries, double hMax) {
+  Workspace& w = *work_;
+  w.framed = true;
+  for (int a = 0; a < D; ++a) w.frame.box.lo[a] = lo[a], w.frame.box.hi[a] = hi[a];
+  w.frame.points = entries, w.frame.layerAlign = 2 * pair_loop::bandLayers;
+  w.frameHMax = hMax;
 }
 
 template <int D>

@@ -167,6 +167,11 @@ using namespace pair_loop;
 template <int D>
 struct ForceEvaluation<D>::Workspace {
   CellList<D> cells;
+  // With `framed`, the grid of the whole domain's entries (ForceEvaluation::frameGrid): its
+  // box, count and h_max instead of this set's.
+  bool framed = false;
+  typename CellList<D>::Frame frame;
+  double frameHMax = 0.0;
   // The rates' record of each sorted entry (rateWidth doubles: d rho/dt, the dh/dt sum, dv/dt by
   // axis), which every thread adds to; on cache lines.
   LineVector<double> rateStore;
@@ -314,7 +319,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   constexpr int cellsPerPoint = 4 << D;
   const int team = std::min(omp_get_max_threads(), CellList<D>::maxTeam);
   if (!reuse) {
-    w.cells.reserve(n, cellsPerPoint, team);
+    w.cells.reserve(n, cellsPerPoint, team, w.framed ? w.frame.points : 0);
     w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
     w.extents.resize(team);
   }
@@ -382,7 +387,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
       w.extents[t] = mine;
     }
 #pragma omp barrier
-    double hMax = 0.0;
+    double hMax = w.framed ? w.frameHMax : 0.0;
     for (int u = 0; u < nt; ++u) {
       const Extent& e = w.extents[u];
       hMax = std::max(hMax, e.hMax);
@@ -408,7 +413,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
     };
     const Share placed = w.cells.buildInTeam(
         n, [&](std::size_t i, int a) { return set.x[i][a]; }, box,
-        0.5 * (Kernel::support * hMax + lists.skin), cellsPerPoint, set.nFluid, cut);
+        0.5 * (Kernel::support * hMax + lists.skin), cellsPerPoint, set.nFluid, cut,
+        w.framed ? &w.frame : nullptr);
     std::fill(w.rate + rateWidth * placed.begin, w.rate + rateWidth * placed.end, 0.0);
     if (t == 0) setUpBands();
     return hMax;

@@ -78,15 +78,25 @@ class CellList {
       for (int a = 0; a < D; ++a) lo[a] = low[a], hi[a] = high[a];
     }
   };
+  // The grid of points spread over several processes (sph/DomainDecomposition.hpp): the cells
+  // that all of them (`points`, in `box`) would get, of which each process builds the window
+  // of whole cells around its own, its first layer a multiple of `layerAlign` (the bands a
+  // pair loop pairs layers in stay the same). The window's cells come in the same order as the
+  // whole grid's, so a point's neighbours come in the same order as there.
+  struct Frame {
+    Box box;
+    std::size_t points = 0;
+    int layerAlign = 1;
+  };
   template <class Pos, class Cut = EvenLayers>
   void build(std::size_t n, Pos&& pos, const Box& box, double cellSize, int cellsPerPoint,
-             std::size_t leading, Cut&& cut) {
+             std::size_t leading, Cut&& cut, const Frame* frame = nullptr) {
     checkBox(n, box);
     const bool parallel = static_cast<std::int64_t>(n) >= parallelFrom();
     const int threads = parallel ? std::min(omp_get_max_threads(), maxTeam) : 1;
-    reserve(n, cellsPerPoint, threads);
+    reserve(n, cellsPerPoint, threads, frame ? frame->points : 0);
 #pragma omp parallel num_threads(threads) if (parallel)
-    buildInTeam(n, pos, box, cellSize, cellsPerPoint, leading, cut);
+    buildInTeam(n, pos, box, cellSize, cellsPerPoint, leading, cut, frame);
   }
 
   // Throws std::invalid_argument where the box has no number along an axis (no point has one
@@ -105,23 +115,27 @@ class CellList {
   // (the points of its layers, which it placed). On return the grid (cells(), layers(), ...) and
   // that part may be read; the other threads' parts after the team's next barrier.
   static constexpr int maxTeam = 64;
-  void reserve(std::size_t n, int cellsPerPoint, int threads) {
+  // (With a Frame, `framePoints` its points: the window holds at most the whole grid's cells.)
+  void reserve(std::size_t n, int cellsPerPoint, int threads, std::size_t framePoints = 0) {
     order_.resize(n), sortedCell_.resize(n);
     // As many cells as the grid may have (below), unset: only the cells of the grid in use are
     // ever stored to, so that the bound costs no memory beyond them.
-    const std::size_t bound = static_cast<std::size_t>(cellsPerPoint) * n + 64 + 1;
+    const std::size_t bound =
+        static_cast<std::size_t>(cellsPerPoint) * std::max(n, framePoints) + 64 + 1;
     if (start_.size() < bound) start_.resize(bound);
     if (static_cast<int>(buckets_.size()) < threads * threads) buckets_.resize(threads * threads);
     blockSum_.resize(static_cast<std::size_t>(threads) * 16);
   }
   template <class Pos, class Cut = EvenLayers>
   Share buildInTeam(std::size_t n, Pos&& pos, const Box& box, double cellSize, int cellsPerPoint,
-                    std::size_t leading, Cut&& cut) {
+                    std::size_t leading, Cut&& cut, const Frame* frame = nullptr) {
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
     const std::int64_t count = static_cast<std::int64_t>(n);
     const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
     // Every thread finds the grid (the same); the first stores it for the queries.
-    const Grid g = gridFor(n, box, cellSize, cellsPerPoint);
+    const Grid g = frame ? windowOf(gridFor(frame->points, frame->box, cellSize, cellsPerPoint), n,
+                                    box, frame->layerAlign)
+                         : gridFor(n, box, cellSize, cellsPerPoint);
     std::int64_t perLayer = 1;
     for (int a = 0; a + 1 < D; ++a) perLayer *= g.dims[a];
     const std::int64_t total = g.total;
@@ -232,6 +246,15 @@ class CellList {
   std::int64_t sortedCell(int k) const {
     return sortedCell_[k];
   }
+  // The same cell's index in the whole grid of a Frame (without one, the grid's own).
+  std::int64_t frameCell(int k) const {
+    std::int64_t rest = sortedCell_[k], idx = 0, stride = 1;
+    for (int a = 0; a < D; ++a) {
+      idx += (rest % grid_.dims[a] + grid_.offset[a]) * stride;
+      rest /= grid_.dims[a], stride *= grid_.frameDims[a];
+    }
+    return idx;
+  }
   std::int64_t cells() const {
     return grid_.total;
   }
@@ -252,7 +275,8 @@ class CellList {
   std::int64_t cellOf(const Vec<D>& x) const {
     std::int64_t idx = 0, stride = 1;
     for (int a = 0; a < D; ++a) {
-      const double k = std::floor((x[grid_.axis[a]] - grid_.lo[a]) * grid_.inverse);
+      const double k =
+          std::floor((x[grid_.axis[a]] - grid_.lo[a]) * grid_.inverse) - grid_.offset[a];
       if (k < -1.0 || k > grid_.dims[a]) return -1;
       idx += std::clamp(static_cast<int>(k), 0, grid_.dims[a] - 1) * stride;
       stride *= grid_.dims[a];
@@ -371,11 +395,15 @@ class CellList {
     double size = 1.0, inverse = 1.0;
     std::array<int, D> dims{};
     std::int64_t total = 0;
+    // A Frame's window: its first cell's index along each numbering axis in the whole grid,
+    // and the whole grid's cells along it (without a Frame 0 and dims).
+    std::array<int, D> offset{}, frameDims{};
     // The cell of coordinate x along numbering axis a, clamped to the grid (a product, not a
     // division a point and axis; with the run counting above, the build of 1,721 points on one
-    // thread went from 10.3 to 9.0 us).
+    // thread went from 10.3 to 9.0 us). In a window, the whole grid's cell less the offset: the
+    // same arithmetic, so each point falls in the cell it falls in there.
     int bin(double x, int a) const {
-      return std::clamp(static_cast<int>((x - lo[a]) * inverse), 0, dims[a] - 1);
+      return std::clamp(static_cast<int>((x - lo[a]) * inverse), 0, frameDims[a] - 1) - offset[a];
     }
   };
   static Grid gridFor(std::size_t n, const Box& box, double cellSize, int cellsPerPoint) {
@@ -406,6 +434,22 @@ class CellList {
       g.size *= 2.0;
     }
     g.inverse = 1.0 / g.size;
+    g.frameDims = g.dims;
+    return g;
+  }
+  // The window of `whole` that holds the n points of `box`: from the cell of its low corner
+  // (along the slowest axis rounded down to a multiple of `align`) to that of its high one.
+  static Grid windowOf(Grid whole, std::size_t n, const Box& box, int align) {
+    if (n == 0) return whole;
+    Grid g = whole;
+    g.total = 1;
+    for (int a = 0; a < D; ++a) {
+      const int first = whole.bin(box.lo[whole.axis[a]], a);
+      const int last = whole.bin(box.hi[whole.axis[a]], a);
+      g.offset[a] = a == D - 1 ? first - first % align : first;
+      g.dims[a] = last - g.offset[a] + 1;
+      g.total *= g.dims[a];
+    }
     return g;
   }
 

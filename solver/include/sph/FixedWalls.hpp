@@ -64,6 +64,8 @@ class FixedWalls {
 
   const std::vector<Vec<D>>& positions() const { return x_; }
   std::size_t size() const { return x_.size(); }
+  // How far from a wall particle the fluid lies that it takes its state from (the support).
+  double reach() const { return 2.0 * h_; }
   double volume(std::size_t w) const { return volume_.empty() ? V0_ : volume_[w]; }
 
  private:
@@ -74,8 +76,12 @@ class FixedWalls {
   KernelKind kernel_;
   Phase phase_;
   Vec<D> g_;
-  // Scratch between calls: the fluid entries in cells of the kernel support.
+  // Scratch between calls: the fluid entries in cells of the kernel support, on a grid fixed by
+  // the wall particles alone (their box grown by the support), so that a wall particle sums its
+  // fluid in the same order whatever part of the fluid a process holds (DomainDecomposition.hpp).
   mutable CellList<D> cells_;
+  typename CellList<D>::Frame frame_;
+  void frameTheWalls();
 };
 
 }  // namespace sph

@@ -63,8 +63,15 @@ class ForceEvaluation {
   void operator()(const InteractionSet<D>& set, Derivatives<D>& out,
                   const Vec<D>& g = Vec<D>::Zero(), NeighbourLists lists = {});
 
-  // The entries below `count` of the last evaluated set (its fluid), in the cell list's order.
-  void cellOrder(std::size_t count, std::vector<int>& out) const;
+  // The entries below `count` of the last evaluated set (its fluid), in the cell list's order;
+  // with `cells`, each one's cell (in the whole grid of frameGrid).
+  void cellOrder(std::size_t count, std::vector<int>& out,
+                 std::vector<std::int64_t>* cells = nullptr) const;
+
+  // The evaluations that follow build their cells as the whole domain's entries would have
+  // them, the set being part of those (DomainDecomposition.hpp): `box` and `entries` of the
+  // whole, and its largest h (CellList::Frame).
+  void frameGrid(const double (&lo)[D], const double (&hi)[D], std::size_t entries, double hMax);
 
   // Names of the terms the chosen loop evaluates, for the run file.
   std::vector<std::string> termNames() const;
