@@ -160,15 +160,28 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
 template <int D>
 void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& out,
                           const Motion& motion) {
-  const std::int64_t n = static_cast<std::int64_t>(state.size());
+  std::int64_t n = static_cast<std::int64_t>(state.size());
   // The lists of the last build serve while no particle has moved, and no h grown, enough to
   // bring a pair that was not listed inside the support (2 d + 2 dh below the skin:
   // ForceEvaluation.hpp). A boundary's entries after the halo (fixed wall particles) stand still,
-  // in the same places of the set while the halo's members are the same.
+  // in the same places of the set while the halo's members are the same. Over several
+  // processes, the motion and h_max are the whole domain's, so that every process decides as one
+  // would.
   const bool skinned = skinFraction_ > 0;
-  const bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n;
-  const double hMax = motion.hMax;
-  const bool reuse = kept && 2.0 * std::sqrt(motion.moved2) + 2.0 * motion.grown < skin_;
+  bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n;
+  double hMax = motion.hMax, moved2 = motion.moved2, grown = motion.grown;
+  if (domain_) {
+    double v[4] = {hMax, moved2, grown, kept ? 0.0 : 1.0};
+    domain_->maxAll(v, 4);
+    hMax = v[0], moved2 = v[1], grown = v[2], kept = v[3] == 0.0;
+  }
+  const bool reuse = kept && 2.0 * std::sqrt(moved2) + 2.0 * grown < skin_;
+  // New lists at an accepted state: the particles that left the slab go to its owner (in the
+  // middle of a step y and y* keep the same particles).
+  if (domain_ && !reuse && &state == &y_) {
+    domain_->migrate(y_, id_, key_);
+    n = static_cast<std::int64_t>(y_.size());
+  }
   if (!reuse && skinned) {
     skin_ = skinFraction_ * 2.0 * hMax;
     listedAt_.resize(n), listedH_.resize(n);
@@ -179,17 +192,127 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   }
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
+  // Over several processes the set is built from the owned particles and the halo within
+  // the support plus the skin of them (every entry the owned particles' lists may hold).
+  const Particles<D>* fluid = &state;
+  if (domain_) {
+    // (and, with fixed wall particles, the fluid that gives those within it their state)
+    const double width = 2.0 * hMax + skin_ + boundary_->fixedReach();
+    domain_->exchangeHalo(state, key_, 1.01 * width, !reuse, halo_, haloKey_);
+    mergeHalo(state);
+    fluid = &local_;
+  }
   // Ghosts within the support plus the skin: those the kept lists may need.
-  boundary_->build(state, scene_.phases, 2.0 * hMax + skin_,
+  boundary_->build(*fluid, scene_.phases, 2.0 * hMax + skin_,
                    reuse ? HaloMembers::same : HaloMembers::rescan, set_);
   // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall
   // particles)
   if (scene_.hydrostaticGhosts && scene_.terms.densityDiffusion == DensityDiffusion::fourtakas)
     ghostDensitiesFromPressure(scene_.phases[0], set_);
-  forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)
+  if (domain_) {
+    if (!reuse) frameGrid(hMax);
+    forces_(set_, localRates_, g, {skin_, reuse});
+    out.resize(static_cast<std::size_t>(n));
+    forEachInShares(n, [&](std::int64_t i) {
+      const int k = ownedAt_[i];
+      out.dvdt[i] = localRates_.dvdt[k], out.drhodt[i] = localRates_.drhodt[k];
+      out.dhdt[i] = localRates_.dhdt[k];
+    });
+  } else {
+    forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)
+  }
   if (source_) source_(t, state, out);
   ++evaluations_;
   if (reuse) ++reusedLists_;
+}
+
+template <int D>
+void Simulation<D>::mergeHalo(const Particles<D>& state) {
+  const std::size_t n = state.size(), nh = halo_.size();
+  local_.resize(n + nh);
+  ownedAt_.resize(n);
+  localOwned_.resize(n + nh);
+  auto copy = [&](const Particles<D>& from, std::size_t i, std::size_t k) {
+    local_.r[k] = from.r[i], local_.v[k] = from.v[i], local_.rho[k] = from.rho[i];
+    local_.m[k] = from.m[i], local_.h[k] = from.h[i], local_.p[k] = from.p[i];
+    local_.phase[k] = from.phase[i];
+  };
+  std::size_t i = 0, j = 0;
+  for (std::size_t k = 0; k < n + nh; ++k) {
+    const bool own = j == nh || (i < n && key_[i] < haloKey_[j]);
+    localOwned_[k] = own;
+    if (own)
+      ownedAt_[i] = static_cast<int>(k), copy(state, i++, k);
+    else
+      copy(halo_, j++, k);
+  }
+}
+
+template <int D>
+void Simulation<D>::frameGrid(double hMax) {
+  // The whole set is every process's fluid and the halo entries of its own fluid (a halo copy's
+  // ghosts are its owner's too), and the fixed wall particles (no source; every process holds
+  // them all), its box the union of the processes' boxes.
+  double box[2 * D];
+  for (int a = 0; a < D; ++a) box[a] = -1e300, box[D + a] = -1e300;
+  std::int64_t entries = 0, fixed = 0;
+  for (std::size_t k = 0; k < set_.size(); ++k) {
+    for (int a = 0; a < D; ++a)
+      box[a] = std::max(box[a], -set_.x[k][a]), box[D + a] = std::max(box[D + a], set_.x[k][a]);
+    const int source = set_.source[k];
+    if (source < 0)
+      ++fixed;
+    else
+      entries += localOwned_[source];
+  }
+  domain_->maxAll(box, 2 * D);
+  entries = domain_->sumAll(entries) + fixed;
+  double lo[D], hi[D];
+  for (int a = 0; a < D; ++a) lo[a] = -box[a], hi[a] = box[D + a];
+  forces_.frameGrid(lo, hi, static_cast<std::size_t>(entries), hMax);
+}
+
+template <int D>
+void Simulation<D>::distribute(std::shared_ptr<DomainDecomposition<D>> d) {
+  if (source_) throw std::logic_error("Simulation::distribute: a source runs in one process");
+  domain_ = std::move(d);
+  if (!domain_) return;
+  key_.resize(y_.size());
+  std::iota(key_.begin(), key_.end(), std::int64_t{0});
+  domain_->keepOwn(y_, id_, key_);
+  ratesValid_ = false, listedAt_.clear();
+}
+
+template <int D>
+void Simulation<D>::agree(std::optional<Failure>& failure) const {
+  // The first failing particle by key, as one process takes the first by index.
+  constexpr double huge = std::numeric_limits<double>::max();
+  double first = huge;
+  if (failure) {
+    const auto at = std::find(id_.begin(), id_.end(), failure->particle);
+    first = at == id_.end() ? 0.0 : static_cast<double>(key_[at - id_.begin()]);
+    first = first * domain_->ranks() + domain_->rank();
+  }
+  double v = first;
+  domain_->minAll(&v, 1);
+  if (v == huge) return failure.reset();
+  const int from = static_cast<int>(std::fmod(v, domain_->ranks()));
+  std::string text;
+  if (domain_->rank() == from) {
+    std::ostringstream o;
+    o.precision(17);
+    o << static_cast<int>(failure->cause) << ' ' << failure->step << ' ' << failure->time << ' '
+      << failure->particle << ' ' << failure->message;
+    text = o.str();
+  }
+  domain_->broadcast(text, from);
+  std::istringstream in(text);
+  int cause;
+  Failure f;
+  in >> cause >> f.step >> f.time >> f.particle;
+  std::getline(in >> std::ws, f.message);
+  f.cause = static_cast<FailureCause>(cause);
+  failure = f;
 }
 
 template <int D>
@@ -226,6 +349,11 @@ double Simulation<D>::timeStep(TimeStepLimit& limit, int& particle) const {
       if (better(v2, iv, v2Max, iV, true)) v2Max = v2, iV = iv;
       if (better(a2, ia, a2Max, iA, true)) a2Max = a2, iA = ia;
     }
+  }
+  if (domain_) {  // the whole domain's extremes (the particle named is this process's)
+    double v[3] = {-hMin, v2Max, a2Max};
+    domain_->maxAll(v, 3);
+    hMin = -v[0], v2Max = v[1], a2Max = v[2];
   }
   for (const auto& ph : scene_.phases) {
     cMax = std::max(cMax, ph.c0);
@@ -510,6 +638,7 @@ struct Simulation<D>::Stepper {
     } else {
       failure = sim.failureFrom(ys, first, t, step);
     }
+    if (sim.domain_) sim.agree(failure);
     return !failure;
   }
 };
@@ -553,8 +682,27 @@ std::optional<Failure> Simulation<D>::advanceWith(double dtMax) {
 template <int D>
 void Simulation<D>::storeInCellOrder() {
   // The last evaluation was of the corrector's y*, whose particles have y's indices.
-  forces_.cellOrder(y_.size(), order_);
   const std::int64_t n = static_cast<std::int64_t>(y_.size());
+  if (domain_) {
+    // The owned entries of the set's fluid (local_, the same particles as y's) in cell order,
+    // numbered anew together with every other process's.
+    forces_.cellOrder(local_.size(), order_, &cells_);
+    if (order_.size() != local_.size()) return;
+    std::vector<int> ownedIndex(local_.size(), -1);
+    for (std::int64_t i = 0; i < n; ++i) ownedIndex[ownedAt_[i]] = static_cast<int>(i);
+    std::vector<std::int64_t> cells, keys;
+    std::size_t placed = 0;
+    for (std::size_t k = 0; k < order_.size(); ++k)
+      if (const int i = ownedIndex[order_[k]]; i >= 0) {
+        order_[placed++] = i;
+        cells.push_back(cells_[k]), keys.push_back(key_[i]);
+      }
+    order_.resize(placed);
+    domain_->renumber(cells, keys);
+    key_ = std::move(keys);
+  } else {
+    forces_.cellOrder(y_.size(), order_);
+  }
   if (static_cast<std::int64_t>(order_.size()) != n) return;
   Particles<D>& to = yStar_;  // free until the next step's predictor
   to.resize(n);

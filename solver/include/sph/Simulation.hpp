@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "sph/DomainDecomposition.hpp"
 #include "sph/ForceEvaluation.hpp"
 #include "sph/InteractionSet.hpp"
 #include "sph/Particles.hpp"
@@ -67,6 +68,14 @@ class Simulation {
   // every evaluation. The scene's numerics.neighbour_skin sets it.
   void keepNeighbourLists(double fraction) { skinFraction_ = fraction, listedAt_.clear(); }
   const std::vector<int>& ids() const { return id_; }
+
+  // Over several processes (DomainDecomposition.hpp): from here on this simulation holds the
+  // particles of its process's slab (particles(), ids() and keys() are those), and each step is
+  // the one a single process would take, to the bit. Before the first step; not with a source.
+  void distribute(std::shared_ptr<DomainDecomposition<D>> d);
+  const DomainDecomposition<D>* decomposition() const { return domain_.get(); }
+  // Each particle's place in a single process's storage (DomainDecomposition.hpp).
+  const std::vector<std::int64_t>& keys() const { return key_; }
 
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
@@ -138,6 +147,13 @@ class Simulation {
   std::optional<Failure> checkParticle(const Particles<D>& s, std::size_t i, double t,
                                        long step) const;
   void storeInCellOrder();
+  // The interaction set's fluid over several processes: the owned `state` and the halo merged
+  // in key order (local_), and where each owned particle is in it (ownedAt_).
+  void mergeHalo(const Particles<D>& state);
+  // The whole domain's cell grid, from every process's part of the set (CellList::Frame).
+  void frameGrid(double hMax);
+  // The same failure (the first by key) on every process, or none.
+  void agree(std::optional<Failure>& failure) const;
   // Whether particles are put back after the step's pass (a custom reflection, an obstacle's):
   // the checks and the lists' motion then wait for it.
   bool reflectsItself() const { return reflection_ || boundary_->hasInnerSolids(); }
@@ -173,6 +189,12 @@ class Simulation {
   LineVector<double> listedH_;
   double reflectionDepth_ = 0.0;
   bool ratesValid_ = false;
+  std::shared_ptr<DomainDecomposition<D>> domain_;  // null: one process
+  std::vector<std::int64_t> key_, haloKey_, cells_;
+  Particles<D> halo_, local_;
+  std::vector<int> ownedAt_;               // owned particle i is local_'s entry ownedAt_[i]
+  std::vector<unsigned char> localOwned_;  // whether local_'s entry k is owned
+  Derivatives<D> localRates_;
 };
 
 }  // namespace sph

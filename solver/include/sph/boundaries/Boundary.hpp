@@ -41,6 +41,9 @@ class Boundary {
   // buildInteractionSet.
   virtual void build(const Particles<D>& fluid, const std::vector<Phase>& phases, double reach,
                      HaloMembers members, InteractionSet<D>& set) const = 0;
+  // How far from a fixed particle the fluid lies that it takes its state from (0: no fixed
+  // particles): a process holding part of the fluid needs that much more of the rest.
+  virtual double fixedReach() const { return 0.0; }
   // Solids inside the domain (obstacles): a fluid particle in one has crossed a wall. False:
   // the two calls below are never made.
   virtual bool hasInnerSolids() const { return false; }

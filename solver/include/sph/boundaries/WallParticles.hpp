@@ -58,6 +58,7 @@ class WallParticles final : public Boundary<D> {
   }
   void build(const Particles<D>& fluid, const std::vector<Phase>& phases, double reach,
              HaloMembers members, InteractionSet<D>& set) const override;
+  double fixedReach() const override { return walls_->reach(); }
   bool hasInnerSolids() const override { return !solids_.empty(); }
   void putBack(Particles<D>& state, double tolerated, long& count, double& deepest) const override;
   SolidCrossing firstInside(const Particles<D>& state) const override;
