@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The quick tier again, built with AddressSanitizer and UndefinedBehaviorSanitizer (the asan preset:
 # -O1, every test's time limit x10). A sanitizer report fails its test. Run by CI after test.sh.
+# Built without MPI (the preset's SPH_MPI OFF): OpenMPI's runtime is not built with the
+# sanitizers; the runs over several processes (verification/mpi) are tested in test.sh's tier.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
