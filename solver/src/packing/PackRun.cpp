@@ -103,14 +103,15 @@ int packScene(const PackingScene& s, const PackOptions& options) {
     out.attribute("potential_energy_initial_over_beta", V0, P);
     stopped = packing.run([&](const PackingRecord& r) {
       if (!std::isfinite(r.kinetic)) finite = false;
-      if (r.iteration % s.historyEvery != 0 && r.kinetic >= s.parameters.stopKineticEnergy) return;
+      if (r.iteration % s.historyEvery != 0 && r.kineticMean >= s.parameters.stopKineticEnergy)
+        return;
       columns[0].values.push_back(r.iteration);
       columns[1].values.push_back(r.kinetic);
       columns[2].values.push_back(r.kineticMean);
       columns[3].values.push_back(r.potential - V0);
       columns[4].values.push_back(H * r.maxGradGamma);
       if (!options.quiet && r.iteration % 500 == 0)
-        std::cerr << "iteration " << r.iteration << ": T/beta = " << r.kinetic
+        std::cerr << "iteration " << r.iteration << ": T/(N beta) = " << r.kineticMean
                   << ", H max|grad Gamma| = " << H * r.maxGradGamma << "\n";
     });
     out.appendSeries(columns);
@@ -134,13 +135,13 @@ int packScene(const PackingScene& s, const PackOptions& options) {
     if (!options.quiet)
       std::cerr << s.name << ": " << setup.fluid.size() << " fluid, " << setup.solid.position.size()
                 << " solid particles; " << packing.iteration()
-                << " iterations, T/beta = " << last.kinetic << ", H max|grad Gamma| " << gStart
-                << " -> " << gEnd << " (" << wall << " s)\n";
+                << " iterations, T/(N beta) = " << last.kineticMean << ", H max|grad Gamma| "
+                << gStart << " -> " << gEnd << " (" << wall << " s)\n";
     if (!(stopped && finite))
       std::cerr << "error: the packing "
-                << (finite ? "did not reach" : "produced a non-finite value before") << " T/beta < "
-                << s.parameters.stopKineticEnergy << " within " << s.parameters.maxIterations
-                << " iterations\n";
+                << (finite ? "did not reach" : "produced a non-finite value before")
+                << " T/(N beta) < " << s.parameters.stopKineticEnergy << " within "
+                << s.parameters.maxIterations << " iterations\n";
     out.finish();
   }
   // Beside the snapshots: H |grad Gamma| per fluid particle before and after, and the solid
