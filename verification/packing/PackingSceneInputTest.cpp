@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -212,6 +214,24 @@ TEST(PackingSceneInput, StopKineticEnergyIsPerParticle) {
   EXPECT_GE(last.kinetic, 1e-6);
   EXPECT_NEAR(last.kinetic / last.kineticMean, static_cast<double>(setup.fluid.size()),
               1e-9 * setup.fluid.size());
+}
+
+// solver/SCENES.md documents every key of a packing scene in one example: it must be one.
+TEST(PackingSceneInput, ScenesMdExampleIsAPackingScene) {
+  std::ifstream in(std::string(SPH_SOURCE_DIR) + "/solver/SCENES.md");
+  std::stringstream b;
+  b << in.rdbuf();
+  const std::string doc = b.str();
+  const std::size_t section = doc.find("**Packing scenes (`sph pack`).**");
+  ASSERT_NE(section, std::string::npos);
+  const std::size_t from = doc.find("```toml\n", section) + 8, to = doc.find("```", from);
+  ASSERT_LT(from, to);
+  const PackingScene s = parsePackingScene(doc.substr(from, to - from), "SCENES.md");
+  EXPECT_EQ(s.name, "quarter_bowl");
+  EXPECT_EQ(s.container.size(), 5u);
+  EXPECT_TRUE(s.container[2].arc);
+  // pressure = rho0 c0^2 / 2, its default, written out: beta = c0^2.
+  EXPECT_NEAR(s.parameters.beta, 31.3 * 31.3, 1e-9);
 }
 
 }  // namespace
