@@ -1,8 +1,9 @@
 // libFuzzer target for the run-scene reader (issue 32): any text given to `sph check` or `sph run`
 // is either accepted or refused with a SceneError that names the file; nothing else may escape
 // (an uncaught exception aborts, which libFuzzer reports as a crash), and no input may crash or
-// hang the reader. (The packing reader, PackingScene.cpp, shares SceneTable.hpp but lives in one
-// file with the packing runs, whose HDF5 and OpenMP this clang build does not link. What `sph
+// hang the reader. (The packing reader, PackingScene.cpp, reads its tables through the same
+// SceneReader.hpp, but it builds the container's lattice as it checks a scene, which a dx that its
+// index bound lets through can keep busy beyond the fuzzer's timeout: not fuzzed here. What `sph
 // check` does after reading, the estimates of RunBudget.hpp, builds the start: the run-mutation
 // driver, fuzz/run_mutants.py, covers it through the program.)
 #include <cstddef>

@@ -1,16 +1,13 @@
 #include "sph/Scene.hpp"
 
-#include <toml++/toml.h>
-
 #include <Eigen/Dense>
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include "SceneTable.hpp"
+#include "SceneReader.hpp"
 #include "SceneWalls.hpp"
 
 namespace sph {
@@ -107,16 +104,11 @@ void readDomain(SceneTable domain, Scene& s) {
 void readPhases(std::vector<SceneTable> phases, Scene& s, SceneTable& top) {
   if (phases.empty()) top.fail("phase", "missing: at least one [[phase]] table");
   std::set<std::string> names;
+  const PhaseKeys keys;  // viscous, no default name or rho0
   for (auto& t : phases) {
-    Phase p;
-    t.allow({"name", "rho0", "c0", "mu", "p0", "gamma"});
-    p.name = t.name("name");
+    t.allow(keys.keys());
+    const Phase p = readPhase(t, keys);
     if (!names.insert(p.name).second) t.fail("name", "phase '" + p.name + "' defined twice");
-    p.rho0 = t.positive("rho0");
-    p.c0 = t.positive("c0");
-    p.mu = t.nonNegative("mu", 0.0);
-    p.p0 = t.number("p0", 0.0);
-    p.gamma = t.positive("gamma", 7.0);
     t.rejectUnknown();
     s.phases.push_back(p);
   }
@@ -238,13 +230,9 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
     }
     if (t.has("packing")) {
       SceneTable pk = t.sub("packing");
-      pk.allow({"alpha", "max_iterations", "stop_kinetic_energy"});
+      pk.allow(packingControlKeys);
       if (!b.packed) t.fail("packing", "packing parameters need initial = \"packed\"");
-      b.packingAlpha = pk.nonNegative("alpha", b.packingAlpha);
-      b.packingMaxIterations =
-          static_cast<int>(pk.integer("max_iterations", b.packingMaxIterations));
-      if (b.packingMaxIterations < 0) pk.fail("max_iterations", "must not be negative");
-      b.packingStop = pk.positive("stop_kinetic_energy", b.packingStop);
+      readPackingControls(pk, b.packingAlpha, b.packingMaxIterations, b.packingStop);
       pk.rejectUnknown();
     }
     b.surface = t.number("surface", hi[D - 1]);
@@ -266,13 +254,6 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
                    std::to_string(k) + "])");
     s.fluids.push_back(b);
   }
-}
-
-KernelKind kernelKind(SceneTable& t, const std::string& v) {
-  if (v == "quadratic") return KernelKind::quadratic;
-  if (v == "cubic_spline") return KernelKind::cubic_spline;
-  if (v == "wendland_c2") return KernelKind::wendland_c2;
-  t.fail("kernel", "unknown kernel '" + v + "' (expected quadratic, cubic_spline or wendland_c2)");
 }
 
 TimeIntegrator integratorKind(SceneTable& t, const std::string& v) {
@@ -477,15 +458,7 @@ void checkBlocksHoldParticles(const Scene& s) {
 }  // namespace
 
 Scene parseScene(const std::string& text, const std::string& file) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream m;
-    m << file << ":" << e.source().begin.line << ":" << e.source().begin.column
-      << ": malformed TOML: " << e.description();
-    throw SceneError(m.str());
-  }
+  const toml::table root = parseSceneToml(text, file);
   Scene s;
   s.file = file;
   s.text = text;
@@ -519,19 +492,9 @@ Scene parseScene(const std::string& text, const std::string& file) {
   SceneTable numerics = top.sub("numerics");
   numerics.allow({"kernel", "dx", "h_over_dx", "cfl_acoustic", "cfl_viscous", "cfl_force",
                   "end_time", "density_band", "dt_floor", "neighbour_skin", "integrator"});
-  s.kernel = kernelKind(numerics, numerics.string("kernel", "quadratic"));
-  s.dx = numerics.positive("dx");
-  s.hOverDx = numerics.positive("h_over_dx", 1.33);
-  // Below 1 the kernel sum of a uniform lattice, sum_j dx^D W_ij, is off 1 by more than 12 %
-  // (quadratic kernel, 2-D: 1.12 at h/dx 1, 1.24 at 0.75, 1.91 at 0.5, against 1.05 at 1.33):
-  // the particles no longer see a continuum. Above 4 a particle lists some 240 neighbours in 2-D
-  // and 2900 in 3-D (11 kB of memory a particle, RunBudget.hpp) while the sum is within 0.2 % of
-  // 1 from h/dx 3 on: more only smooths the flow more (the O(h^2) error grows).
-  if (s.hOverDx < 1.0 || s.hOverDx > 4.0)
-    numerics.fail("h_over_dx", "must lie in [1, 4], got " + SceneTable::fmt(s.hOverDx) +
-                                   " (below 1 the kernel's support holds too few neighbours for "
-                                   "its sums to approximate integrals; above 4 it only smooths "
-                                   "and costs: solver/SCENES.md)");
+  s.kernel = readKernel(numerics, KernelKind::quadratic);
+  s.dx = readDx(numerics);
+  s.hOverDx = readHOverDx(numerics, 1.33);
   s.cflAcoustic = numerics.positive("cfl_acoustic", 0.25);
   s.cflViscous = numerics.positive("cfl_viscous", 0.125);
   s.cflForce = numerics.positive("cfl_force", 0.25);
@@ -566,11 +529,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
 }
 
 Scene readScene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return parseScene(buffer.str(), path);
+  return parseScene(sceneText(path), path);
 }
 
 }  // namespace sph

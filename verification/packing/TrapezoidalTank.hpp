@@ -23,12 +23,14 @@ inline TankFigures packTank(double HOverDx, double alpha, int maxIterations) {
   s.dx = s.lengthScale / HOverDx;
   s.parameters.alpha = alpha;
   s.parameters.maxIterations = maxIterations;
-  s.parameters.stopKineticEnergy = 1e-8;  // T (the sum) is never below T/N, so both are seen
+  const double threshold = 1e-8;  // the paper's, for T / beta and for T / (N beta)
   const PackingSetup setup = setUp(s);
+  // The packing stops on T / (N beta); at threshold / N that is T / beta < threshold, the later
+  // of the two (T is never below T / N), so both are seen.
+  s.parameters.stopKineticEnergy = threshold / static_cast<double>(setup.fluid.size());
   ParticlePacking packing(setup.fluid, setup.solid.position, setup.V0, s.dx, s.parameters);
   TankFigures f;
   f.fluid = setup.fluid.size();
-  const double threshold = s.parameters.stopKineticEnergy;
   packing.run([&](const PackingRecord& r) {
     if (r.iteration == 0) f.gradStart = s.lengthScale * r.maxGradGamma;
     if (r.iteration > 0 && f.iterations < 0 && r.kinetic < threshold) f.iterations = r.iteration;

@@ -177,7 +177,7 @@ bool ParticlePacking::run(const std::function<void(const PackingRecord&)>& obser
     step();
     const PackingRecord r = record();
     if (observe) observe(r);
-    if (r.kinetic < parameters_.stopKineticEnergy) return true;
+    if (r.kineticMean < parameters_.stopKineticEnergy) return true;
   }
   return false;
 }

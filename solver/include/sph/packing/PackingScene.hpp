@@ -1,5 +1,5 @@
 #pragma once
-// A packing scene (TOML, format in validation/packing/README.md): a 2-D container of walls and
+// A packing scene (TOML, keys in solver/SCENES.md): a 2-D container of walls and
 // arcs, a free-surface height, the fluid's equation of state and the packing parameters. `sph
 // pack SCENE --out DIR` builds the lattice and the solid layers, packs, assigns the hydrostatic
 // state and writes <DIR>/<name>.h5.
