@@ -4,9 +4,11 @@
 // line: processes, threads a process, whether they outnumber the cores (oversubscribed), the
 // particles, wall seconds of the measured steps (the slowest process's), particle-steps per
 // second, and per step the halo exchange's and the migration's seconds (the slowest process's)
-// and the halo particles sent (all processes).
+// and the halo particles sent (all processes), and the largest process's peak resident memory
+// per particle it owns.
 #include <mpi.h>
 #include <omp.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +48,11 @@ int measure(const Scene& scene, long steps, int ranks, int rank) {
   const Traffic after = sim.decomposition() ? sim.decomposition()->traffic() : Traffic{};
   t[1] = after.haloSeconds - before.haloSeconds;
   t[2] = after.migrationSeconds - before.migrationSeconds;
+  rusage use{};
+  getrusage(RUSAGE_SELF, &use);  // ru_maxrss in KiB (Linux)
+  double perOwned = 1024.0 * use.ru_maxrss / std::max<std::size_t>(sim.particles().size(), 1);
   MPI_Allreduce(MPI_IN_PLACE, t, 3, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(MPI_IN_PLACE, &perOwned, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   long long counts[4] = {static_cast<long long>(sim.particles().size()),
                          after.haloSent - before.haloSent, after.migrated - before.migrated,
                          after.rebalances - before.rebalances};
@@ -59,10 +65,10 @@ int measure(const Scene& scene, long steps, int ranks, int rank) {
         "\"particles\": %lld, \"dx\": %.6g, \"steps\": %ld, \"wall_s\": %.4f, "
         "\"particle_steps_per_s\": %.5g, \"halo_s_per_step\": %.4g, "
         "\"migration_s_per_step\": %.4g, \"halo_sent_per_step\": %.1f, \"migrated\": %lld, "
-        "\"rebalances\": %lld}\n",
+        "\"rebalances\": %lld, \"peak_rss_bytes_per_particle\": %.0f}\n",
         scene.name.c_str(), ranks, threads, ranks * threads > int(cores) ? "true" : "false",
         counts[0], scene.dx, steps, t[0], double(counts[0]) * steps / t[0], t[1] / steps,
-        t[2] / steps, double(counts[1]) / steps, counts[2], counts[3] / ranks);
+        t[2] / steps, double(counts[1]) / steps, counts[2], counts[3] / ranks, perOwned);
   }
   return 0;
 }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "sph/Checkpoint.hpp"
+#include "sph/DomainDecomposition.hpp"
 #include "sph/Interrupt.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
@@ -230,6 +231,16 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       return reportError(e);
     }
+  }
+  // Launched as several processes (mpirun -n N): each would run the whole scene into the same
+  // run file. The decomposition is there (sph/DomainDecomposition.hpp) but the run's output is
+  // not gathered yet: refused before anything is written.
+  if (const int n = sph::launchedProcesses(); n > 1) {
+    if (sph::launchedRank() == 0)
+      std::cerr << "error: sph run as " << n << " processes (mpirun -n " << n
+                << "): a run's output over several processes is not supported yet; run it as one "
+                   "process (its threads: --threads)\n";
+    return sph::exitBadInput;
   }
   try {
     sph::catchInterrupts();

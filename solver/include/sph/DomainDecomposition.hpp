@@ -66,6 +66,10 @@ class DomainDecomposition {
 template <int D>
 std::shared_ptr<DomainDecomposition<D>> slabDecomposition(const Scene& scene);
 
+// The processes a launcher (mpirun) started this one among, from its environment (OpenMPI's
+// OMPI_COMM_WORLD_SIZE, MPICH's PMI_SIZE; 1 without one), and this one's place among them.
+int launchedProcesses();
+int launchedRank();
 // MPI's start and end for a process launched by mpirun (a plain launch starts nothing).
 void startProcesses(int& argc, char**& argv);
 void endProcesses();

@@ -298,10 +298,10 @@ template std::shared_ptr<DomainDecomposition<2>> slabDecomposition<2>(const Scen
 template std::shared_ptr<DomainDecomposition<3>> slabDecomposition<3>(const Scene&);
 
 void startProcesses(int& argc, char**& argv) {
-  // Only under a launcher (OpenMPI's mpirun sets OMPI_COMM_WORLD_SIZE, MPICH's PMI_SIZE): a
-  // plain `sph run` stays a plain process. Threads only in OpenMP regions, MPI from the main
+  // Only among several processes of a launcher (launchedProcesses): a plain `sph run`, or one
+  // of one process, stays a plain process. Threads only in OpenMP regions, MPI from the main
   // thread outside them (MPI_THREAD_FUNNELED).
-  if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE")) return;
+  if (launchedProcesses() <= 1) return;
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
 }
