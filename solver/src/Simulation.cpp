@@ -199,7 +199,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
     // (and, with fixed wall particles, the fluid that gives those within it their state)
     const double width = 2.0 * hMax + skin_ + boundary_->fixedReach();
     domain_->exchangeHalo(state, key_, 1.01 * width, !reuse, halo_, haloKey_);
-    mergeHalo(state);
+    mergeHalo(state, !reuse);
     fluid = &local_;
   }
   // Ghosts within the support plus the skin: those the kept lists may need.
@@ -227,25 +227,28 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
 }
 
 template <int D>
-void Simulation<D>::mergeHalo(const Particles<D>& state) {
-  const std::size_t n = state.size(), nh = halo_.size();
+void Simulation<D>::mergeHalo(const Particles<D>& state, bool rescan) {
+  const std::int64_t n = static_cast<std::int64_t>(state.size());
+  const std::int64_t nh = static_cast<std::int64_t>(halo_.size());
+  // Where each owned and halo particle goes, merged by key: anew with the halo's members.
+  if (rescan || static_cast<std::int64_t>(ownedAt_.size()) != n ||
+      static_cast<std::int64_t>(haloAt_.size()) != nh) {
+    ownedAt_.resize(n), haloAt_.resize(nh), localOwned_.resize(n + nh);
+    std::int64_t i = 0, j = 0;
+    for (std::int64_t k = 0; k < n + nh; ++k) {
+      const bool own = j == nh || (i < n && key_[i] < haloKey_[j]);
+      localOwned_[k] = own;
+      (own ? ownedAt_[i++] : haloAt_[j++]) = static_cast<int>(k);
+    }
+  }
   local_.resize(n + nh);
-  ownedAt_.resize(n);
-  localOwned_.resize(n + nh);
-  auto copy = [&](const Particles<D>& from, std::size_t i, std::size_t k) {
+  auto copy = [&](const Particles<D>& from, std::int64_t i, std::int64_t k) {
     local_.r[k] = from.r[i], local_.v[k] = from.v[i], local_.rho[k] = from.rho[i];
     local_.m[k] = from.m[i], local_.h[k] = from.h[i], local_.p[k] = from.p[i];
     local_.phase[k] = from.phase[i];
   };
-  std::size_t i = 0, j = 0;
-  for (std::size_t k = 0; k < n + nh; ++k) {
-    const bool own = j == nh || (i < n && key_[i] < haloKey_[j]);
-    localOwned_[k] = own;
-    if (own)
-      ownedAt_[i] = static_cast<int>(k), copy(state, i++, k);
-    else
-      copy(halo_, j++, k);
-  }
+  forEachInShares(n, [&](std::int64_t i) { copy(state, i, ownedAt_[i]); });
+  forEachInShares(nh, [&](std::int64_t j) { copy(halo_, j, haloAt_[j]); });
 }
 
 template <int D>

@@ -148,8 +148,9 @@ class Simulation {
                                        long step) const;
   void storeInCellOrder();
   // The interaction set's fluid over several processes: the owned `state` and the halo merged
-  // in key order (local_), and where each owned particle is in it (ownedAt_).
-  void mergeHalo(const Particles<D>& state);
+  // in key order (local_), and where each owned and halo particle is in it (placed anew when
+  // the halo's members are chosen anew).
+  void mergeHalo(const Particles<D>& state, bool rescan);
   // The whole domain's cell grid, from every process's part of the set (CellList::Frame).
   void frameGrid(double hMax);
   // The same failure (the first by key) on every process, or none.
@@ -192,7 +193,8 @@ class Simulation {
   std::shared_ptr<DomainDecomposition<D>> domain_;  // null: one process
   std::vector<std::int64_t> key_, haloKey_, cells_;
   Particles<D> halo_, local_;
-  std::vector<int> ownedAt_;               // owned particle i is local_'s entry ownedAt_[i]
+  std::vector<int> ownedAt_,
+      haloAt_;  // owned particle i is local_'s entry ownedAt_[i], halo j haloAt_[j]
   std::vector<unsigned char> localOwned_;  // whether local_'s entry k is owned
   Derivatives<D> localRates_;
 };

@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
 #include "sph/DomainDecomposition.hpp"
 #include "sph/Scene.hpp"
@@ -123,6 +123,10 @@ class SlabDecomposition final : public DomainDecomposition<D> {
     }
     traffic_.migrated += static_cast<std::int64_t>(owned.size() - stay.size());
     std::vector<double> in = exchange(out);
+    if (in.empty() && stay.size() == owned.size()) {  // none left, none came: as they were
+      traffic_.migrationSeconds += MPI_Wtime() - began;
+      return;
+    }
     for (std::size_t i : stay) pack(owned, i, ids[i], keys[i], in);
     unpackSorted(in, owned, ids, keys);
     traffic_.migrationSeconds += MPI_Wtime() - began;
@@ -186,9 +190,21 @@ class SlabDecomposition final : public DomainDecomposition<D> {
       const std::size_t total = all.size() / 2;
       std::vector<std::size_t> order(total);
       std::iota(order.begin(), order.end(), std::size_t{0});
-      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      auto before = [&](std::size_t a, std::size_t b) {
         return all[2 * a] != all[2 * b] ? all[2 * a] < all[2 * b] : all[2 * a + 1] < all[2 * b + 1];
-      });
+      };
+      // Each process's pairs come in its cell order, itself (cell, key) ascending: merged run by
+      // run (a sort where a run is not in order).
+      bool runsInOrder = true;
+      for (int r = 0; r < ranks_ && runsInOrder; ++r)
+        runsInOrder = std::is_sorted(order.begin() + offsets[r] / 2,
+                                     order.begin() + (offsets[r] + counts[r]) / 2, before);
+      if (runsInOrder)
+        for (int r = 1; r < ranks_; ++r)
+          std::inplace_merge(order.begin(), order.begin() + offsets[r] / 2,
+                             order.begin() + (offsets[r] + counts[r]) / 2, before);
+      else
+        std::sort(order.begin(), order.end(), before);
       places.resize(total);
       for (std::size_t k = 0; k < total; ++k) places[order[k]] = static_cast<std::int64_t>(k);
       for (int r = 0; r < ranks_; ++r)
