@@ -8,6 +8,7 @@
 
 #include "sph/ForceEvaluation.hpp"
 #include "sph/InteractionSet.hpp"
+#include "sph/ParticleShifting.hpp"
 #include "sph/Particles.hpp"
 #include "sph/Scene.hpp"
 #include "sph/boundaries/Boundary.hpp"
@@ -97,6 +98,9 @@ class Simulation {
   // The deepest such crossing so far [m] (at most dx/2), for the wall tests of issue 3.
   double maxReflectionDepth() const { return reflectionDepth_; }
   const ForceEvaluation<D>& forces() const { return forces_; }
+  // The scene's particle shifting (none: null) and the last step's shifts, by particle.
+  const ParticleShifting<D>* shifting() const { return shifting_.get(); }
+  const LineVector<Vec<D>>& lastShift() const { return shift_; }
   std::vector<std::string> termNames() const;
 
   // What a checkpoint keeps of the time loop besides the particles (in their stored order) and
@@ -158,6 +162,8 @@ class Simulation {
   ForceEvaluation<D> forces_;
   Source source_;
   std::unique_ptr<Boundary<D>> boundary_;
+  std::unique_ptr<ParticleShifting<D>> shifting_;
+  LineVector<Vec<D>> shift_;  // dr of the step's final stage, from its trial state
   Check check_;
   Reflection reflection_;
   Particles<D> y_, yStar_;
