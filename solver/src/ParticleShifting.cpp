@@ -62,6 +62,8 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
   if (nf == 0) return;
   double hMax = 0.0;
   for (const double h : set.h) hMax = std::max(hMax, h);
+  volume_.resize(set.size());
+  for (std::size_t j = 0; j < set.size(); ++j) volume_[j] = set.m[j] / set.rho[j];
   CellList<D>& cells = cells_->list;
   const auto& order = cells.order();
   const double R = ShiftingParameters::anticlumpingR, dx = dx_;
@@ -69,13 +71,16 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
 
   withKernel(kernel_, [&](auto kernel) {
     using K = decltype(kernel);
-    cells.build(set.x, K::support * hMax);
+    // Cells of half the reach: a particle's neighbours lie in the 5^(D-1) rows of 5 cells
+    // around it (CellList::forEachAdjacentRow<2>), a tighter box around the support than 3^D
+    // cells of the whole reach.
+    cells.build(set.x, 0.5 * K::support * hMax);
     const std::int64_t ncells = cells.cells();
     // Calls f(j, r_ij, r^2, h_ij) for each entry j inside the support of fluid entry i (cell c).
     auto neighbours = [&](std::int64_t c, int i, auto&& f) {
       const Vec<D> xi = set.x[i];
       const double hi = set.h[i];
-      cells.forEachAdjacentRange(c, [&](int begin, int end) {
+      cells.template forEachAdjacentRow<2>(c, [&](int begin, int end) {
         for (int kk = begin; kk < end; ++kk) {
           const int j = order[kk];
           const Vec<D> r = xi - set.x[j];
@@ -95,10 +100,12 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
         Vec<D> gradC = Vec<D>::Zero(), g = Vec<D>::Zero();
         double divR = 0.0;
         neighbours(c, i, [&](int j, const Vec<D>& r, double r2, double hij) {
-          const double dist = std::sqrt(r2);
-          const double F = K::template dWdr<D>(dist, hij) / dist;  // grad_i W_ij = F r_ij
-          const double V = set.m[j] / set.rho[j];
-          const double w = K::template W<D>(dist, hij) / K::template W<D>(dx, hij);
+          const double dist = std::sqrt(r2), hInv = 1.0 / hij;
+          // grad_i W_ij = F r_ij (the pair loop's form: no division beyond 1/r and 1/h_ij)
+          const double F = K::template gradOverR<D>(dist, 1.0 / dist, hInv);
+          const double V = volume_[j];
+          // W_ij / W(dx) at h_ij = the kernel's shape at q over its shape at dx / h_ij
+          const double w = K::template W<D>(dist * hInv, 1.0) / K::template W<D>(dx * hInv, 1.0);
           const double w2 = w * w;
           g += (V * F) * r;
           gradC += (V * F * (1.0 + R * (w2 * w2))) * r;
@@ -108,23 +115,21 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
         surface_[i] = divR < p_.surfaceThreshold;
       }
     if (!p_.freeSurface) return;
-      // Near the surface: a surface particle inside the support (an image or ghost stands for
-      // its source; wall particles are never on it).
-#pragma omp parallel for schedule(static) if (parallel)
+    // Near the surface: inside the support of a surface particle (the support is symmetric in i
+    // and j), marked from the surface particles, which are few; a fluid entry's own, an image's
+    // or ghost's for its source (wall particles are never on the surface).
+    near_ = surface_;
     for (std::int64_t c = 0; c < ncells; ++c)
       for (int k = cells.cellBegin(c); k < cells.cellEnd(c); ++k) {
         const int i = order[k];
-        if (i >= nf) continue;
-        bool near = surface_[i] != 0;
-        if (!near)
-          neighbours(c, i, [&](int j, const Vec<D>&, double, double) {
-            const std::size_t u = static_cast<std::size_t>(j);
-            if (u < static_cast<std::size_t>(nf))
-              near = near || surface_[j];
-            else if (u < haloEnd)
-              near = near || surface_[set.source[j]];
-          });
-        near_[i] = near;
+        if (i >= nf || !surface_[i]) continue;
+        neighbours(c, i, [&](int j, const Vec<D>&, double, double) {
+          const std::size_t u = static_cast<std::size_t>(j);
+          if (u < static_cast<std::size_t>(nf))
+            near_[j] = 1;
+          else if (u < haloEnd)
+            near_[set.source[j]] = 1;
+        });
       }
   });
 

@@ -90,7 +90,7 @@ class ParticleShifting {
   double dx_;
   std::unique_ptr<Cells> cells_;
   LineVector<Vec<D>> gradC_, g_;
-  LineVector<double> divR_;
+  LineVector<double> divR_, volume_;  // volume_: m / rho of every entry of the set
   std::vector<char> surface_, near_;
 };
 
