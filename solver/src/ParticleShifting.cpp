@@ -67,7 +67,10 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
   CellList<D>& cells = cells_->list;
   const auto& order = cells.order();
   const double R = ShiftingParameters::anticlumpingR, dx = dx_;
-  const bool parallel = nf >= parallelFrom();
+  // A pass costs some 300 ns a particle (the dam break at dx 0.01, one thread), against the few ns
+  // of the loops parallelFrom() is for: from 512 particles it outweighs a parallel region's wake
+  // (20 us with idle threads asleep, Parallel.hpp) seven times.
+  const bool parallel = nf >= 512;
 
   withKernel(kernel_, [&](auto kernel) {
     using K = decltype(kernel);
@@ -91,29 +94,31 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
         }
       });
     };
-    // The sums of grad C, g and div r (header).
+    // The sums of grad C, g and div r (header), the threads taking equal runs of the sorted
+    // entries (not of the cells: a free-surface flow fills a part of its box).
+    const std::int64_t entries = static_cast<std::int64_t>(set.size());
 #pragma omp parallel for schedule(static) if (parallel)
-    for (std::int64_t c = 0; c < ncells; ++c)
-      for (int k = cells.cellBegin(c); k < cells.cellEnd(c); ++k) {
-        const int i = order[k];
-        if (i >= nf) continue;
-        Vec<D> gradC = Vec<D>::Zero(), g = Vec<D>::Zero();
-        double divR = 0.0;
-        neighbours(c, i, [&](int j, const Vec<D>& r, double r2, double hij) {
-          const double dist = std::sqrt(r2), hInv = 1.0 / hij;
-          // grad_i W_ij = F r_ij (the pair loop's form: no division beyond 1/r and 1/h_ij)
-          const double F = K::template gradOverR<D>(dist, 1.0 / dist, hInv);
-          const double V = volume_[j];
-          // W_ij / W(dx) at h_ij = the kernel's shape at q over its shape at dx / h_ij
-          const double w = K::template W<D>(dist * hInv, 1.0) / K::template W<D>(dx * hInv, 1.0);
-          const double w2 = w * w;
-          g += (V * F) * r;
-          gradC += (V * F * (1.0 + R * (w2 * w2))) * r;
-          divR -= V * F * r2;
-        });
-        gradC_[i] = gradC, g_[i] = g, divR_[i] = divR;
-        surface_[i] = divR < p_.surfaceThreshold;
-      }
+    for (std::int64_t k = 0; k < entries; ++k) {
+      const int i = order[k];
+      const std::int64_t c = cells.sortedCell(static_cast<int>(k));
+      if (i >= nf) continue;
+      Vec<D> gradC = Vec<D>::Zero(), g = Vec<D>::Zero();
+      double divR = 0.0;
+      neighbours(c, i, [&](int j, const Vec<D>& r, double r2, double hij) {
+        const double dist = std::sqrt(r2), hInv = 1.0 / hij;
+        // grad_i W_ij = F r_ij (the pair loop's form: no division beyond 1/r and 1/h_ij)
+        const double F = K::template gradOverR<D>(dist, 1.0 / dist, hInv);
+        const double V = volume_[j];
+        // W_ij / W(dx) at h_ij = the kernel's shape at q over its shape at dx / h_ij
+        const double w = K::template W<D>(dist * hInv, 1.0) / K::template W<D>(dx * hInv, 1.0);
+        const double w2 = w * w;
+        g += (V * F) * r;
+        gradC += (V * F * (1.0 + R * (w2 * w2))) * r;
+        divR -= V * F * r2;
+      });
+      gradC_[i] = gradC, g_[i] = g, divR_[i] = divR;
+      surface_[i] = divR < p_.surfaceThreshold;
+    }
     if (!p_.freeSurface) return;
     // Near the surface: inside the support of a surface particle (the support is symmetric in i
     // and j), marked from the surface particles, which are few; a fluid entry's own, an image's
