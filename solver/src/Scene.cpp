@@ -294,6 +294,29 @@ void readDensityDiffusion(SceneTable& physics, Scene& s) {
                      SceneTable::fmt(gamma));
 }
 
+// physics.shifting (ParticleShifting.hpp): the form, its coefficient A and the surface threshold.
+void readShifting(SceneTable& physics, Scene& s) {
+  const std::string form = physics.string("shifting", "none");
+  ShiftingParameters& p = s.shifting;
+  p.form = ShiftingForm::none;
+  for (ShiftingForm f : {ShiftingForm::none, ShiftingForm::lind, ShiftingForm::delta_plus})
+    if (form == name(f)) p.form = f;
+  if (form != name(p.form))
+    physics.fail("shifting", "unknown shifting '" + form + "' (expected none, lind or delta_plus)");
+  if (p.form == ShiftingForm::none) {
+    for (const char* key : {"shifting_coefficient", "shifting_surface_threshold"})
+      if (physics.has(key)) physics.fail(key, "is set, but shifting is \"none\"");
+    return;
+  }
+  p.coefficient = physics.positive("shifting_coefficient", defaultShiftingCoefficient(p.form));
+  p.surfaceThreshold =
+      physics.positive("shifting_surface_threshold", defaultSurfaceThreshold(s.dimension));
+  if (p.surfaceThreshold >= s.dimension)
+    physics.fail("shifting_surface_threshold",
+                 "must lie below the interior's div r = " + std::to_string(s.dimension) + ", got " +
+                     SceneTable::fmt(p.surfaceThreshold));
+}
+
 // The domain as "[l0, u0] x [l1, u1]".
 std::string fmtBox(const Scene& s) {
   std::string out;
@@ -478,7 +501,8 @@ Scene parseScene(const std::string& text, const std::string& file) {
 
   SceneTable physics = top.sub("physics");
   physics.allow({"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h",
-                 "density_diffusion", "density_diffusion_form"});
+                 "density_diffusion", "density_diffusion_form", "shifting", "shifting_coefficient",
+                 "shifting_surface_threshold"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
@@ -487,6 +511,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.terms.morrisViscosity = physics.boolean("morris_viscosity", false);
   s.terms.variableH = physics.boolean("variable_h", false);
   readDensityDiffusion(physics, s);
+  readShifting(physics, s);
   physics.rejectUnknown();
 
   SceneTable numerics = top.sub("numerics");

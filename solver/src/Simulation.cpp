@@ -104,6 +104,8 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
   if (!advance_)
     throw std::logic_error("Simulation: unknown time integrator " +
                            std::to_string(static_cast<int>(scene.integrator)));
+  if (scene.shifting.form != ShiftingForm::none)
+    shifting_ = std::make_unique<ParticleShifting<D>>(scene.kernel, scene.shifting, scene.dx);
   id_.resize(y_.size());
   std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)
@@ -119,6 +121,7 @@ std::vector<std::string> Simulation<D>::termNames() const {
   boundary_->listTerms(names);
   if (bounds_.anyPeriodic()) names.push_back("periodic");
   if (source_) names.push_back("source");
+  if (shifting_) names.push_back("shifting_" + std::string(name(scene_.shifting.form)));
   return names;
 }
 
@@ -278,6 +281,8 @@ void Simulation<D>::frameGrid(double hMax) {
 template <int D>
 void Simulation<D>::distribute(std::shared_ptr<DomainDecomposition<D>> d) {
   if (source_) throw std::logic_error("Simulation::distribute: a source runs in one process");
+  // (the shifts are summed over the set's fluid entries, owned and halo alike: not yet split)
+  if (shifting_) throw std::logic_error("Simulation::distribute: shifting runs in one process");
   domain_ = std::move(d);
   if (!domain_) return;
   key_.resize(y_.size());
@@ -558,8 +563,12 @@ struct Simulation<D>::Stepper {
   static integrators::RateFields<D> fieldsOf(const Derivatives<D>& f) {
     return {f.dvdt.data(), f.drhodt.data(), f.dhdt.data()};
   }
-  // f(y*) at t + `after` (sized by the evaluation).
-  void evaluate(double after) { sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion); }
+  // f(y*) at t + `after` (sized by the evaluation), and with particle shifting the shifts the
+  // final stage adds, from the interaction set of y* (the step's trial state) just built.
+  void evaluate(double after) {
+    sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion);
+    if (sim.shifting_) (*sim.shifting_)(sim.set_, dt, sim.shift_);
+  }
 
   // Stage::trial: update, wrap, motion. Returns true.
   template <class Update>
@@ -606,6 +615,7 @@ struct Simulation<D>::Stepper {
     const double t = sim.t_ + dt;
     const long step = sim.step_ + 1;
     const Simulation& checker = sim;
+    const Vec<D>* shift = sim.shifting_ ? sim.shift_.data() : nullptr;  // after the update
 #pragma omp parallel if (parallel) reduction(+ : reflected) \
     reduction(max : deepest, hMax, moved2, grown) reduction(min : first)
     {
@@ -613,10 +623,10 @@ struct Simulation<D>::Stepper {
       walk(
           shareOf(count, omp_get_thread_num(), omp_get_num_threads()), [
             &mine, &reflected, &deepest, &first, &checker, &ys, update, faces, plausible, phases,
-            ownReflection, t, step, rS, vS, rhoS, hS, pS,
-            phaseS
+            ownReflection, t, step, rS, vS, rhoS, hS, pS, phaseS, shift
           ](std::int64_t i) __attribute__((always_inline)) {
             update(i);
+            if (shift) rS[i] += shift[i];
             pS[i] = TaitEquationOfState::pressure(rhoS[i], phases[phaseS[i]]);
             faces.wrap(rS[i]);
             faces.reflect(rS[i], vS[i], reflected, deepest);

@@ -96,6 +96,21 @@ TEST(BadInput, UnknownIntegrator) {
                  "numerics.integrator", "unknown integrator 'leapfrog'");
 }
 
+TEST(BadInput, UnknownShifting) {
+  expectRejected("[physics]\n", "[physics]\nshifting = \"xsph\"\n", "physics.shifting",
+                 "unknown shifting 'xsph'");
+}
+
+TEST(BadInput, ShiftingCoefficientWithoutShifting) {
+  expectRejected("[physics]\n", "[physics]\nshifting_coefficient = 2.0\n",
+                 "physics.shifting_coefficient", "shifting is \"none\"");
+}
+
+TEST(BadInput, NonPositiveShiftingCoefficient) {
+  expectRejected("[physics]\n", "[physics]\nshifting = \"lind\"\nshifting_coefficient = -1.0\n",
+                 "physics.shifting_coefficient", "must be positive");
+}
+
 TEST(BadInput, NonIntegerDimension) {
   expectRejected("dimension = 2\n", "dimension = 2.5\n", "dimension", "must be 1, 2 or 3");
 }

@@ -39,6 +39,16 @@ inline const Model fourtakas{
 inline const Model fourtakasVerlet{"paper + Fourtakas delta 0.1, position Verlet",
                                    fourtakas.physics, "integrator = \"position_verlet\"\n"};
 
+// The same with particle shifting (ParticleShifting.hpp) at its default coefficient: Lind et al.'s
+// Fickian form (D = 2 h |u| dt) and delta-plus (D = 4 h max|u| dt).
+inline const Model paperLind{"paper + Lind shifting", paper.physics + "shifting = \"lind\"\n"};
+inline const Model paperDeltaPlus{"paper + delta-plus shifting",
+                                  paper.physics + "shifting = \"delta_plus\"\n"};
+inline const Model fourtakasLind{"paper + Fourtakas delta 0.1 + Lind shifting",
+                                 fourtakas.physics + "shifting = \"lind\"\n"};
+inline const Model fourtakasDeltaPlus{"paper + Fourtakas delta 0.1 + delta-plus shifting",
+                                      fourtakas.physics + "shifting = \"delta_plus\"\n"};
+
 struct Kernel {
   std::string name;  // the scene's word
   double hOverDx;

@@ -1,7 +1,8 @@
 // One tank at rest (TankAtRest.hpp) per call, as a CSV line, for the study over models, kernels,
 // aspects and resolutions (validation/stability/tank_at_rest_study.py runs the matrix):
 //   tank_at_rest_study MODEL KERNEL ASPECT CELLS [HORIZON]
-// MODEL paper | mc | fourtakas, KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx,
+// MODEL paper | mc | fourtakas | lind | delta_plus | fourtakas_lind | fourtakas_delta_plus (the
+// last four with particle shifting), KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx,
 // HORIZON t sqrt(g/H) (100).
 #include <cstdio>
 #include <cstdlib>
@@ -13,15 +14,20 @@ int main(int argc, char** argv) {
   using namespace sph::verification::tank_at_rest;
   if (argc < 5 || argc > 6) {
     std::fprintf(stderr,
-                 "usage: tank_at_rest_study paper|mc|fourtakas quadratic|cubic_spline|wendland_c2 "
+                 "usage: tank_at_rest_study paper|mc|fourtakas|lind|delta_plus|fourtakas_lind|"
+                 "fourtakas_delta_plus quadratic|cubic_spline|wendland_c2 "
                  "ASPECT CELLS [HORIZON]\n");
     return 2;
   }
   const std::string model = argv[1], kernel = argv[2];
-  const Model* m = model == "paper"       ? &paper
-                   : model == "mc"        ? &molteniColagrossi
-                   : model == "fourtakas" ? &fourtakas
-                                          : nullptr;
+  const Model* m = model == "paper"                  ? &paper
+                   : model == "mc"                   ? &molteniColagrossi
+                   : model == "fourtakas"            ? &fourtakas
+                   : model == "lind"                 ? &paperLind
+                   : model == "delta_plus"           ? &paperDeltaPlus
+                   : model == "fourtakas_lind"       ? &fourtakasLind
+                   : model == "fourtakas_delta_plus" ? &fourtakasDeltaPlus
+                                                     : nullptr;
   const Kernel* k = kernel == "quadratic"      ? &quadratic
                     : kernel == "cubic_spline" ? &cubicSpline
                     : kernel == "wendland_c2"  ? &wendland

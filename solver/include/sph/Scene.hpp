@@ -10,6 +10,7 @@
 #include "sph/EquationOfState.hpp"
 #include "sph/ForceEvaluation.hpp"
 #include "sph/Kernels.hpp"
+#include "sph/ParticleShifting.hpp"
 
 namespace sph {
 
@@ -94,6 +95,7 @@ struct Scene {
   TermSwitches terms;
   double beta = 0.0;            // artificial viscosity, eq. (10)
   double diffusionDelta = 0.0;  // density diffusion delta (terms.densityDiffusion: its form)
+  ShiftingParameters shifting;  // particle shifting, once a step (ParticleShifting.hpp)
   KernelKind kernel = KernelKind::quadratic;
   double dx = 0.0, hOverDx = 1.33;
   double cflAcoustic = 0.25, cflViscous = 0.125, cflForce = 0.25;  // Morris et al. 1997

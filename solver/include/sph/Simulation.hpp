@@ -9,6 +9,7 @@
 #include "sph/DomainDecomposition.hpp"
 #include "sph/ForceEvaluation.hpp"
 #include "sph/InteractionSet.hpp"
+#include "sph/ParticleShifting.hpp"
 #include "sph/Particles.hpp"
 #include "sph/Scene.hpp"
 #include "sph/boundaries/Boundary.hpp"
@@ -71,7 +72,8 @@ class Simulation {
 
   // Over several processes (DomainDecomposition.hpp): from here on this simulation holds the
   // particles of its process's slab (particles(), ids() and keys() are those), and each step is
-  // the one a single process would take, to the bit. Before the first step; not with a source.
+  // the one a single process would take, to the bit. Before the first step; not with a source
+  // or particle shifting.
   void distribute(std::shared_ptr<DomainDecomposition<D>> d);
   const DomainDecomposition<D>* decomposition() const { return domain_.get(); }
   // Each particle's place in a single process's storage (DomainDecomposition.hpp).
@@ -106,6 +108,9 @@ class Simulation {
   // The deepest such crossing so far [m] (at most dx/2), for the wall tests of issue 3.
   double maxReflectionDepth() const { return reflectionDepth_; }
   const ForceEvaluation<D>& forces() const { return forces_; }
+  // The scene's particle shifting (none: null) and the last step's shifts, by particle.
+  const ParticleShifting<D>* shifting() const { return shifting_.get(); }
+  const LineVector<Vec<D>>& lastShift() const { return shift_; }
   std::vector<std::string> termNames() const;
 
   // What a checkpoint keeps of the time loop besides the particles (in their stored order) and
@@ -175,6 +180,8 @@ class Simulation {
   ForceEvaluation<D> forces_;
   Source source_;
   std::unique_ptr<Boundary<D>> boundary_;
+  std::unique_ptr<ParticleShifting<D>> shifting_;
+  LineVector<Vec<D>> shift_;  // dr of the step's final stage, from its trial state
   Check check_;
   Reflection reflection_;
   Particles<D> y_, yStar_;
