@@ -70,9 +70,5 @@ std::shared_ptr<DomainDecomposition<D>> slabDecomposition(const Scene& scene);
 // OMPI_COMM_WORLD_SIZE, MPICH's PMI_SIZE; 1 without one), and this one's place among them.
 int launchedProcesses();
 int launchedRank();
-// MPI's start and end for a process launched by mpirun (a plain launch starts nothing).
-void startProcesses(int& argc, char**& argv);
-void endProcesses();
-bool withMpi();  // whether the build has MPI
 
 }  // namespace sph

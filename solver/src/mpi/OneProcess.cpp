@@ -11,10 +11,4 @@ template std::shared_ptr<DomainDecomposition<1>> slabDecomposition<1>(const Scen
 template std::shared_ptr<DomainDecomposition<2>> slabDecomposition<2>(const Scene&);
 template std::shared_ptr<DomainDecomposition<3>> slabDecomposition<3>(const Scene&);
 
-void startProcesses(int&, char**&) {}
-void endProcesses() {}
-bool withMpi() {
-  return false;
-}
-
 }  // namespace sph

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "sph/DomainDecomposition.hpp"
@@ -170,21 +171,14 @@ class SlabDecomposition final : public DomainDecomposition<D> {
 
   void renumber(const std::vector<std::int64_t>& cells,
                 std::vector<std::int64_t>& keys) const override {
-    // Rank 0 sorts every (cell, key) and hands each rank its particles' places: O(N) there,
-    // every keepCellOrder steps (a histogram by cell layer would spread it; DESIGN-MPI.md).
+    // Rank 0 orders every (cell, key) and hands each rank its particles' places: O(N) there,
+    // every keepCellOrder steps (DESIGN-MPI.md: keys by prefix sums instead).
     const int n = static_cast<int>(keys.size());
     std::vector<std::int64_t> pairs(2 * n);
     for (int i = 0; i < n; ++i) pairs[2 * i] = cells[i], pairs[2 * i + 1] = keys[i];
-    std::vector<int> counts(ranks_), offsets(ranks_);
-    const int two = 2 * n;
-    MPI_Gather(&two, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    std::vector<std::int64_t> all, places;
-    if (rank_ == 0) {
-      std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
-      all.resize(offsets.back() + counts.back());
-    }
-    MPI_Gatherv(pairs.data(), two, MPI_INT64_T, all.data(), counts.data(), offsets.data(),
-                MPI_INT64_T, 0, MPI_COMM_WORLD);
+    std::vector<int> counts, offsets;
+    const std::vector<std::int64_t> all = gatherTo0(pairs, counts, offsets);
+    std::vector<std::int64_t> places;
     std::vector<int> halfCounts(ranks_), halfOffsets(ranks_);
     if (rank_ == 0) {
       const std::size_t total = all.size() / 2;
@@ -219,7 +213,8 @@ class SlabDecomposition final : public DomainDecomposition<D> {
               std::vector<int>& allIds) const override {
     std::vector<double> mine;
     for (std::size_t i = 0; i < owned.size(); ++i) pack(owned, i, ids[i], keys[i], mine);
-    std::vector<double> every = gatherTo0(mine);
+    std::vector<int> counts, offsets;
+    const std::vector<double> every = gatherTo0(mine, counts, offsets);
     std::vector<std::int64_t> allKeys;
     if (rank_ == 0)
       unpackSorted(every, all, allIds, allKeys);
@@ -275,17 +270,22 @@ class SlabDecomposition final : public DomainDecomposition<D> {
                   recvCounts.data(), recvOffsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
     return in;
   }
-  std::vector<double> gatherTo0(const std::vector<double>& mine) const {
+  // Every rank's `mine` on rank 0, in rank order; `counts` and `offsets` (rank 0's) say where.
+  template <class T>
+  std::vector<T> gatherTo0(const std::vector<T>& mine, std::vector<int>& counts,
+                           std::vector<int>& offsets) const {
+    static_assert(std::is_same_v<T, double> || std::is_same_v<T, std::int64_t>);
+    const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : MPI_INT64_T;
     int n = static_cast<int>(mine.size());
-    std::vector<int> counts(ranks_), offsets(ranks_);
+    counts.assign(ranks_, 0), offsets.assign(ranks_, 0);
     MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    std::vector<double> all;
+    std::vector<T> all;
     if (rank_ == 0) {
       std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
       all.resize(offsets.back() + counts.back());
     }
-    MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                0, MPI_COMM_WORLD);
+    MPI_Gatherv(mine.data(), n, type, all.data(), counts.data(), offsets.data(), type, 0,
+                MPI_COMM_WORLD);
     return all;
   }
 
@@ -312,25 +312,5 @@ std::shared_ptr<DomainDecomposition<D>> slabDecomposition(const Scene& scene) {
 template std::shared_ptr<DomainDecomposition<1>> slabDecomposition<1>(const Scene&);
 template std::shared_ptr<DomainDecomposition<2>> slabDecomposition<2>(const Scene&);
 template std::shared_ptr<DomainDecomposition<3>> slabDecomposition<3>(const Scene&);
-
-void startProcesses(int& argc, char**& argv) {
-  // Only among several processes of a launcher (launchedProcesses): a plain `sph run`, or one
-  // of one process, stays a plain process. Threads only in OpenMP regions, MPI from the main
-  // thread outside them (MPI_THREAD_FUNNELED).
-  if (launchedProcesses() <= 1) return;
-  int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-}
-
-void endProcesses() {
-  int started = 0, ended = 0;
-  MPI_Initialized(&started);
-  MPI_Finalized(&ended);
-  if (started && !ended) MPI_Finalize();
-}
-
-bool withMpi() {
-  return true;
-}
 
 }  // namespace sph
