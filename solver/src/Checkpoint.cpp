@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <random>
 #include <sstream>
 
 #include "Hdf5Checked.hpp"
@@ -18,7 +20,10 @@ namespace {
 
 using hdf5::check;
 using hdf5::Handle;
-constexpr const char* format = "sph-checkpoint-1";
+// The first format held a copy of the whole record under /record; the second lists segments.
+constexpr const char* format = "sph-checkpoint-2";
+constexpr const char* firstFormat = "sph-checkpoint-1";
+constexpr const char* segmentFormat = "sph-checkpoint-record-1";
 
 // Writing: every failure an OutputError naming the file (Hdf5Checked.hpp).
 void putAttribute(hid_t object, const std::string& name, hid_t type, const void* value,
@@ -74,9 +79,19 @@ class Reader {
     if (!std::filesystem::exists(path)) fail("no such file");
     file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (file_ < 0) fail("not an HDF5 file, or damaged (" + hdf5::reason() + ")");
-    if (!has("/", "format") || text("/", "format") != format)
+    if (!has("/", "format") ||
+        (text("/", "format") != format && text("/", "format") != firstFormat))
       fail(std::string("not a checkpoint of sph run (its root attribute format is not ") + format +
            ")");
+  }
+  // A record segment (Checkpoint.hpp) instead of a checkpoint.
+  Reader(const std::string& path, const char* expected) : path_(path) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    if (!std::filesystem::exists(path)) fail("no such file");
+    file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file_ < 0) fail("not an HDF5 file, or damaged (" + hdf5::reason() + ")");
+    if (!has("/", "format") || text("/", "format") != expected)
+      fail(std::string("its root attribute format is not ") + expected);
   }
   ~Reader() {
     if (file_ >= 0) H5Fclose(file_);
@@ -117,6 +132,11 @@ class Reader {
   std::int64_t integer(const std::string& object, const std::string& attribute) const {
     std::int64_t v = 0;
     read(object, attribute, H5T_NATIVE_INT64, &v);
+    return v;
+  }
+  std::uint64_t unsignedInteger(const std::string& object, const std::string& attribute) const {
+    std::uint64_t v = 0;
+    read(object, attribute, H5T_NATIVE_UINT64, &v);
     return v;
   }
   // The string dataset `name`.
@@ -203,7 +223,74 @@ void sync(const std::string& path) {
     throw OutputError(path + ": cannot sync it to the disk (" + std::strerror(errno) + ")");
 }
 
+// The segments' directory of checkpoint `path` and run `run`, relative to the checkpoint's
+// directory: <name>.checkpoint.record/<run> for <name>.checkpoint.h5.
+std::string recordDirectory(const std::string& path, const std::string& run) {
+  return (std::filesystem::path(path).stem().string() + ".record/") + run;
+}
+std::string segmentName(std::size_t k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%05zu.h5", k);
+  return name;
+}
+std::uint64_t randomWord() {
+  std::random_device device;
+  std::uint64_t w = 0;
+  while (w == 0) w = (std::uint64_t{device()} << 32) ^ device();
+  return w;
+}
+
+// Segment `index` of `chain`: what the record of `runFile` gained since the last segment, written
+// as <segment>.partial, synced and renamed to `segment`. Returns where the record then ends.
+RunFile::RecordEnd writeSegment(const std::string& segment, const RecordChain& chain,
+                                std::size_t index, std::uint64_t token, RunFile& runFile) {
+  namespace fs = std::filesystem;
+  const fs::path directory = fs::path(segment).parent_path();
+  std::error_code e;
+  fs::create_directories(directory, e);
+  if (e) throw OutputError(directory.string() + ": cannot create it (" + e.message() + ")");
+  const std::string writing = segment + ".partial";
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t file = H5Fcreate(writing.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file < 0) hdf5::fail(writing, "creating the record segment");
+  RunFile::RecordEnd end;
+  try {
+    Handle root(H5Gopen2(file, "/", H5P_DEFAULT), H5Gclose, writing, "opening /");
+    putText(root, "format", segmentFormat, writing);
+    putText(root, "run", chain.run, writing);
+    putInteger(root, "index", static_cast<std::int64_t>(index), writing);
+    putAttribute(root, "token", H5T_NATIVE_UINT64, &token, writing);
+    end = runFile.writeRecordSegment(file, writing);
+  } catch (...) {
+    H5Fclose(file);
+    fs::remove(writing, e);
+    throw;
+  }
+  if (H5Fclose(file) < 0) {
+    fs::remove(writing, e);
+    hdf5::fail(writing, "closing the record segment");
+  }
+  sync(writing);
+  fs::rename(writing, segment, e);
+  if (e) throw OutputError(writing + ": cannot rename it to " + segment + " (" + e.message() + ")");
+  sync(directory.string());
+  return end;
+}
+
 }  // namespace
+
+RecordChain newRecordChain() {
+  char run[17];
+  std::snprintf(run, sizeof run, "%016llx", static_cast<unsigned long long>(randomWord()));
+  return {run, {}};
+}
+
+void removeCheckpoint(const std::string& path) {
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  const std::filesystem::path p(path);
+  std::filesystem::remove_all(p.parent_path() / (p.stem().string() + ".record"), ignored);
+}
 
 std::string checkpointPath(const std::string& outDir, const Scene& scene) {
   return (std::filesystem::path(outDir) / (scene.name + ".checkpoint.h5")).string();
@@ -211,10 +298,19 @@ std::string checkpointPath(const std::string& outDir, const Scene& scene) {
 
 template <int D>
 void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const RunProgress& progress,
-                     RunFile& runFile, std::vector<SeriesColumn>& series,
+                     RunFile& runFile, std::vector<SeriesColumn>& series, RecordChain& chain,
                      const StepCounters* failedStep) {
   namespace fs = std::filesystem;
   runFile.appendSeries(series);
+  // The record's new segment, in place before the checkpoint that lists it.
+  const std::string directory = recordDirectory(path, chain.run);
+  const fs::path segments = fs::absolute(path).parent_path() / directory;
+  const std::size_t index = chain.tokens.size();
+  const std::uint64_t token = randomWord();
+  const std::string segment = (segments / segmentName(index)).string();
+  RunFile::RecordEnd recordEnd = writeSegment(segment, chain, index, token, runFile);
+  std::vector<std::uint64_t> tokens = chain.tokens;
+  tokens.push_back(token);
   const std::string writing = path + ".partial";
   const Scene& scene = sim.scene();
   const Particles<D>& y = sim.particles();
@@ -279,7 +375,11 @@ void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const Ru
     putNumber(p, "energy_round_off", progress.energyRoundOff, writing);
     putDoubles(p, "volume0", progress.volume0, writing);
     putDoubles(p, "max_variation", progress.maxVariation, writing);
-    runFile.copyRecordTo(file, "/record", writing);
+    putText(root, "record_directory", directory, writing);
+    putText(root, "record_run", chain.run, writing);
+    Handle r(H5Gcreate2(file, "/record", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, writing,
+             "creating /record");
+    putArray(r, "tokens", H5T_NATIVE_UINT64, tokens.data(), tokens.size(), 1, writing);
   };
   try {
     write();
@@ -299,6 +399,17 @@ void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const Ru
   fs::rename(writing, path, e);
   if (e) throw OutputError(writing + ": cannot rename it to " + path + " (" + e.message() + ")");
   sync(fs::absolute(path).parent_path().string());
+  runFile.segmented(std::move(recordEnd));
+  chain.tokens = std::move(tokens);
+  // What no checkpoint lists any more: other runs' chains, and this chain's segments past the
+  // new one (written for a checkpoint that was cut short).
+  std::vector<fs::path> stale;
+  for (auto it = fs::directory_iterator(segments.parent_path(), e);
+       !e && it != fs::directory_iterator(); it.increment(e))
+    if (it->path().filename() != chain.run) stale.push_back(it->path());
+  for (const fs::path& other : stale) fs::remove_all(other, e);
+  for (std::size_t k = index + 1; fs::exists(segments / segmentName(k), e); ++k)
+    fs::remove(segments / segmentName(k), e);
 }
 
 Scene checkpointScene(const std::string& path) {
@@ -384,17 +495,67 @@ CheckpointState<D> readCheckpoint(const std::string& path, const Scene& scene) {
   return c;
 }
 
-void adoptCheckpointRecord(const std::string& path, RunFile& runFile) {
+namespace {
+// The segments checkpoint `r` (of the second format) lists, open and checked: each there, of
+// its chain and index, with the token the checkpoint gave it.
+struct Segments {
+  RecordChain chain;
+  std::vector<std::unique_ptr<Reader>> open;
+  std::vector<std::int64_t> files;
+  std::vector<std::string> paths;
+};
+Segments openSegments(const Reader& r, const std::string& path) {
+  Segments s;
+  s.chain.run = r.text("/", "record_run");
+  s.chain.tokens.resize(r.length("/record/tokens"));
+  if (s.chain.tokens.empty()) r.fail("/record/tokens lists no segment");
+  r.array("/record/tokens", H5T_NATIVE_UINT64, s.chain.tokens.data(), s.chain.tokens.size(), 1);
+  const std::filesystem::path directory =
+      std::filesystem::absolute(path).parent_path() / r.text("/", "record_directory");
+  for (std::size_t k = 0; k < s.chain.tokens.size(); ++k) {
+    const std::string segment = (directory / segmentName(k)).string();
+    try {
+      s.open.push_back(std::make_unique<Reader>(segment, segmentFormat));
+    } catch (const CheckpointError& e) {
+      r.fail(std::string("its record segment ") + e.what());
+    }
+    const Reader& g = *s.open.back();
+    if (g.text("/", "run") != s.chain.run ||
+        g.integer("/", "index") != static_cast<std::int64_t>(k) ||
+        g.unsignedInteger("/", "token") != s.chain.tokens[k])
+      r.fail("its record segment " + segment +
+             " is not the one it wrote (of another run, or written again since)");
+    s.files.push_back(g.file()), s.paths.push_back(segment);
+  }
+  return s;
+}
+}  // namespace
+
+void checkCheckpointRecord(const std::string& path) {
   const Reader r(path);
-  runFile.adoptRecord(r.file(), "/record");
+  if (r.text("/", "format") != firstFormat) openSegments(r, path);
+}
+
+RecordChain adoptCheckpointRecord(const std::string& path, RunFile& runFile) {
+  const Reader r(path);
+  if (r.text("/", "format") == firstFormat) {
+    runFile.adoptRecord(r.file(), "/record");
+    return {};
+  }
+  Segments s = openSegments(r, path);
+  runFile.adoptRecordSegments(s.files, s.paths);
+  return std::move(s.chain);
 }
 
 template void writeCheckpoint<1>(const std::string&, const Simulation<1>&, const RunProgress&,
-                                 RunFile&, std::vector<SeriesColumn>&, const StepCounters*);
+                                 RunFile&, std::vector<SeriesColumn>&, RecordChain&,
+                                 const StepCounters*);
 template void writeCheckpoint<2>(const std::string&, const Simulation<2>&, const RunProgress&,
-                                 RunFile&, std::vector<SeriesColumn>&, const StepCounters*);
+                                 RunFile&, std::vector<SeriesColumn>&, RecordChain&,
+                                 const StepCounters*);
 template void writeCheckpoint<3>(const std::string&, const Simulation<3>&, const RunProgress&,
-                                 RunFile&, std::vector<SeriesColumn>&, const StepCounters*);
+                                 RunFile&, std::vector<SeriesColumn>&, RecordChain&,
+                                 const StepCounters*);
 template CheckpointState<1> readCheckpoint<1>(const std::string&, const Scene&);
 template CheckpointState<2> readCheckpoint<2>(const std::string&, const Scene&);
 template CheckpointState<3> readCheckpoint<3>(const std::string&, const Scene&);

@@ -128,6 +128,7 @@ template <int D>
 CheckpointState<D> resumeFrom(const std::string& path, const Scene& scene,
                               std::optional<Simulation<D>>& sim) {
   CheckpointState<D> c = readCheckpoint<D>(path, scene);
+  checkCheckpointRecord(path);
   sim.emplace(scene, c.particles);
   sim->particles().p = c.particles.p;
   sim->keepCellOrder(cellOrderSteps);
@@ -195,7 +196,17 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.attribute("restarted_from", opt.restart);
     file.attribute("restart_time", sim.time());
     file.attribute("restart_step", std::int64_t(sim.step()));
-    adoptCheckpointRecord(opt.restart, file);
+  }
+  // The record segments of this run's checkpoints continue the restart's chain where they go
+  // beside it (the checkpoint is continued in place), else start a chain of their own.
+  RecordChain chain = newRecordChain();
+  if (restarted) {
+    RecordChain adopted = adoptCheckpointRecord(opt.restart, file);
+    std::error_code ignored;
+    if (!adopted.run.empty() && std::filesystem::equivalent(opt.restart, checkpoint, ignored))
+      chain = std::move(adopted);
+    else
+      file.segmented({});
   }
   for (const PackedBlock& b : packed) writePacking(file, scene, b);
 
@@ -247,7 +258,12 @@ int run(const Scene& scene, const RunOptions& opt) {
     r.volume0 = series.volume0, r.total0 = series.total0, r.maxVariation = series.maxVariation;
     r.energyKinetic = energy.start().kinetic, r.energyInternal = energy.start().internal;
     r.energyPotential = energy.start().potential, r.energyRoundOff = energy.roundOff();
-    writeCheckpoint<D>(checkpoint, sim, r, file, series.columns, failedStep);
+    try {
+      writeCheckpoint<D>(checkpoint, sim, r, file, series.columns, chain, failedStep);
+    } catch (const OutputError& e) {
+      file.outputFailedBeside(e.what());  // the run stops (exit 4) with the file saying why
+      throw;
+    }
   };
   const bool progress = opt.progress && isatty(STDERR_FILENO);
   auto lastPrint = clock::now(), lastCheckpoint = lastPrint;
@@ -341,10 +357,7 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
   file.finish();
   // A run that reached its end needs its checkpoint no more: the run file holds it all.
-  if (!early) {
-    std::error_code ignored;
-    std::filesystem::remove(checkpoint, ignored);
-  }
+  if (!early) removeCheckpoint(checkpoint);
 
   if (!opt.quiet) {
     std::printf("%s: %s at t = %.6g s after %ld steps, %zu particles, wall time %.2f s\n",

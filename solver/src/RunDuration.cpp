@@ -147,13 +147,14 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
       << " (RunBudget.hpp: a guard against an interval typed too small)";
     throw SceneError(m.str());
   }
-  // A checkpoint copies the run file so far (Checkpoint.hpp): C of them write ~C/2 run files.
+  // A checkpoint writes the state and the record since the last one (Checkpoint.hpp): its
+  // segments hold a second copy of the run file until the run ends.
   const double checkpoints = s.checkpointInterval > 0 ? s.endTime / s.checkpointInterval : 0.0;
   if (!(checkpoints <= limits.maxSnapshots)) {
     m << "'output.checkpoint_interval': a checkpoint every " << s.checkpointInterval << " s to "
       << "'numerics.end_time' = " << s.endTime << " s makes about " << checkpoints
       << " checkpoints, more than " << limits.maxSnapshots
-      << " (each copies the run file so far: RunBudget.hpp)";
+      << " (RunBudget.hpp: a guard against an interval typed too small)";
     throw SceneError(m.str());
   }
   if (!(e.steps <= limits.maxSteps)) {
@@ -163,11 +164,13 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
     throw SceneError(m.str());
   }
   const double free = freeSpace(limits.outDir);
-  if (free > 0 && !(e.outputBytes <= free)) {
+  const double written = checkpoints > 0 ? 2.0 * e.outputBytes : e.outputBytes;
+  if (free > 0 && !(written <= free)) {
     const double series = rows * columns * 8.0;
     m << (series > 0.5 * e.outputBytes ? "'output.series_every'" : "'output.snapshot_interval'")
       << ": the run would write about " << e.outputBytes / 1048576.0 << " MiB (" << e.snapshots
-      << " snapshots of " << e.particles << " particles, " << rows << " series rows), more than "
+      << " snapshots of " << e.particles << " particles, " << rows << " series rows"
+      << (checkpoints > 0 ? "; twice that with the checkpoints' record" : "") << "), more than "
       << "the " << free / 1048576.0 << " MiB free in " << limits.outDir;
     throw SceneError(m.str());
   }

@@ -352,24 +352,187 @@ std::string asGroupPrefix(const std::string& group) {
 }
 }  // namespace
 
-void RunFile::copyRecordTo(std::int64_t into, const std::string& under,
-                           const std::string& intoPath) {
+namespace {
+// The names of group `group`'s members, in HDF5's name order (the snapshots' %05zu names sort as
+// their numbers).
+std::vector<std::string> members(hid_t file, const std::string& group, const std::string& path) {
+  std::vector<std::string> names;
+  if (!exists(file, group, path)) return names;
+  Handle g(H5Gopen2(file, group.c_str(), H5P_DEFAULT), H5Gclose, path, "opening " + group);
+  H5G_info_t info{};
+  check(H5Gget_info(g, &info), path, "listing " + group);
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t size =
+        H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
+    if (size < 0) hdf5::fail(path, "listing " + group);
+    std::string name(static_cast<std::size_t>(size) + 1, '\0');
+    if (H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size(),
+                           H5P_DEFAULT) < 0)
+      hdf5::fail(path, "listing " + group);
+    name.resize(static_cast<std::size_t>(size));
+    names.push_back(name);
+  }
+  return names;
+}
+
+hsize_t rowsOf(hid_t d, const std::string& path, const std::string& where) {
+  Handle space(H5Dget_space(d), H5Sclose, path, "the extent of " + where);
+  hsize_t n = 0;
+  if (H5Sget_simple_extent_dims(space, &n, nullptr) < 0) hdf5::fail(path, "the extent of " + where);
+  return n;
+}
+
+// Rows [from, from + count) of 1-D dataset `d` (of `type`) as bytes.
+std::vector<char> readRows(hid_t d, hid_t type, hsize_t from, hsize_t count,
+                           const std::string& path, const std::string& where) {
+  std::vector<char> bytes(count * H5Tget_size(type));
+  if (count == 0) return bytes;
+  Handle file(H5Dget_space(d), H5Sclose, path, "the extent of " + where);
+  check(H5Sselect_hyperslab(file, H5S_SELECT_SET, &from, nullptr, &count, nullptr), path,
+        "selecting in " + where);
+  Handle mem(H5Screate_simple(1, &count, nullptr), H5Sclose, path, "a dataspace");
+  check(H5Dread(d, type, mem, file, H5P_DEFAULT, bytes.data()), path, "reading " + where);
+  return bytes;
+}
+
+std::uint64_t integerAttribute(hid_t object, const char* name, const std::string& path,
+                               const std::string& where) {
+  std::uint64_t v = 0;
+  Handle a(H5Aopen(object, name, H5P_DEFAULT), H5Aclose, path, where + " attribute " + name);
+  check(H5Aread(a, H5T_NATIVE_UINT64, &v), path, where + " attribute " + name);
+  return v;
+}
+}  // namespace
+
+RunFile::RecordEnd RunFile::writeRecordSegment(std::int64_t into, const std::string& intoPath) {
   if (broken_ || file_ < 0)
     throw OutputError(writing_ + ": the run file takes no more writes (an earlier one failed)");
-  copyRecord(file_, "/", into, asGroupPrefix(under), intoPath);
+  RecordEnd end;
+  end.any = true, end.snapshots = snapshots_.size();
+  for (const std::string& c : members(file_, "/series", writing_)) {
+    Handle d(H5Dopen2(file_, ("/series/" + c).c_str(), H5P_DEFAULT), H5Dclose, writing_,
+             "opening /series/" + c);
+    end.rows.emplace_back(c, rowsOf(d, writing_, "/series/" + c));
+  }
+  if (!segmented_.any) {
+    copyRecord(file_, "/", into, "/", intoPath);
+    return end;
+  }
+  Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose, intoPath, "a property list");
+  check(H5Pset_create_intermediate_group(lcpl, 1), intoPath, "a property list");
+  for (std::size_t k = segmented_.snapshots; k < snapshots_.size(); ++k) {
+    const std::string& g = snapshots_[k].group;
+    check(H5Ocopy(file_, g.c_str(), into, g.c_str(), H5P_DEFAULT, lcpl), intoPath, "copying " + g);
+  }
+  Handle series(H5Gcreate2(into, "/series", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                intoPath, "creating /series");
+  for (const auto& [c, rows] : end.rows) {
+    const std::string where = "/series/" + c;
+    std::uint64_t from = 0;
+    for (const auto& [name, before] : segmented_.rows)
+      if (name == c) from = before;
+    if (from == 0) {  // a column new since the last segment, whole with its attributes
+      check(H5Ocopy(file_, where.c_str(), into, where.c_str(), H5P_DEFAULT, H5P_DEFAULT), intoPath,
+            "copying " + where);
+      continue;
+    }
+    Handle d(H5Dopen2(file_, where.c_str(), H5P_DEFAULT), H5Dclose, writing_, "opening " + where);
+    Handle type(H5Dget_type(d), H5Tclose, writing_, "the type of " + where);
+    const hsize_t count = rows - from;
+    const std::vector<char> bytes = readRows(d, type, from, count, writing_, where);
+    Handle space(H5Screate_simple(1, &count, nullptr), H5Sclose, intoPath, "a dataspace");
+    Handle out(H5Dcreate2(into, where.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+               H5Dclose, intoPath, "creating " + where);
+    if (count > 0)
+      check(H5Dwrite(out, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()), intoPath, where);
+    writeAttribute(out, "rows_from", H5T_NATIVE_UINT64, &from, intoPath);
+  }
+  return end;
+}
+
+void RunFile::adoptRecordSegments(const std::vector<std::int64_t>& from,
+                                  const std::vector<std::string>& fromPaths) {
+  guarded([&] {
+    for (std::size_t s = 0; s < from.size(); ++s) {
+      const hid_t segment = from[s];
+      const std::string& path = fromPaths[s];
+      if (s == 0) {
+        copyRecord(segment, "/", file_, "/", writing_);
+        continue;
+      }
+      Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose, writing_, "a property list");
+      check(H5Pset_create_intermediate_group(lcpl, 1), writing_, "a property list");
+      const std::vector<std::string> had = members(file_, "/snapshots", writing_);
+      const std::vector<std::string> added = members(segment, "/snapshots", path);
+      for (std::size_t k = 0; k < added.size(); ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "%05zu", had.size() + k);
+        if (added[k] != name)
+          throw OutputError(path + ": snapshot " + added[k] + " does not follow the record's " +
+                            std::to_string(had.size()) + " snapshots");
+        const std::string g = "/snapshots/" + added[k];
+        check(H5Ocopy(segment, g.c_str(), file_, g.c_str(), H5P_DEFAULT, lcpl), writing_,
+              "copying " + g + " from " + path);
+      }
+      for (const std::string& c : members(segment, "/series", path)) {
+        const std::string where = "/series/" + c;
+        Handle d(H5Dopen2(segment, where.c_str(), H5P_DEFAULT), H5Dclose, path, "opening " + where);
+        const htri_t hasFrom = H5Aexists(d, "rows_from");
+        if (hasFrom < 0) hdf5::fail(path, "looking up " + where + " rows_from");
+        const bool known = exists(file_, where, writing_);
+        if (!hasFrom) {  // a whole column, new in this segment
+          if (known)
+            throw OutputError(path + ": " + where + " is whole but the record already has it");
+          check(H5Ocopy(segment, where.c_str(), file_, where.c_str(), H5P_DEFAULT, lcpl), writing_,
+                "copying " + where + " from " + path);
+          continue;
+        }
+        const std::uint64_t rowsFrom = integerAttribute(d, "rows_from", path, where);
+        if (!known) throw OutputError(path + ": " + where + " continues a column the record lacks");
+        Handle target(H5Dopen2(file_, where.c_str(), H5P_DEFAULT), H5Dclose, writing_,
+                      "opening " + where);
+        hsize_t old = rowsOf(target, writing_, where);
+        if (old != rowsFrom)
+          throw OutputError(path + ": " + where + " continues row " + std::to_string(rowsFrom) +
+                            " but the record has " + std::to_string(old));
+        Handle type(H5Dget_type(d), H5Tclose, path, "the type of " + where);
+        hsize_t add = rowsOf(d, path, where), total = old + add;
+        if (add == 0) continue;
+        const std::vector<char> bytes = readRows(d, type, 0, add, path, where);
+        check(H5Dset_extent(target, &total), writing_, "extending " + where);
+        Handle file(H5Dget_space(target), H5Sclose, writing_, "the extent of " + where);
+        check(H5Sselect_hyperslab(file, H5S_SELECT_SET, &old, nullptr, &add, nullptr), writing_,
+              "selecting in " + where);
+        Handle mem(H5Screate_simple(1, &add, nullptr), H5Sclose, writing_, "a dataspace");
+        check(H5Dwrite(target, type, mem, file, H5P_DEFAULT, bytes.data()), writing_, where);
+      }
+    }
+  });
+  adoptedSnapshots();
 }
 
 void RunFile::adoptRecord(std::int64_t from, const std::string& under) {
+  guarded([&] { copyRecord(from, asGroupPrefix(under), file_, "/", writing_); });
+  adoptedSnapshots();
+}
+
+void RunFile::adoptedSnapshots() {
   guarded([&] {
-    copyRecord(from, asGroupPrefix(under), file_, "/", writing_);
     snapshots_.clear();
-    if (!exists(file_, "/snapshots", writing_)) return;
-    Handle g(H5Gopen2(file_, "/snapshots", H5P_DEFAULT), H5Gclose, writing_, "opening /snapshots");
-    H5G_info_t info{};
-    check(H5Gget_info(g, &info), writing_, "listing /snapshots");
-    for (hsize_t k = 0; k < info.nlinks; ++k) {
+    segmented_ = RecordEnd{};
+    segmented_.any = true;
+    for (const std::string& c : members(file_, "/series", writing_)) {
+      Handle d(H5Dopen2(file_, ("/series/" + c).c_str(), H5P_DEFAULT), H5Dclose, writing_,
+               "opening /series/" + c);
+      segmented_.rows.emplace_back(c, rowsOf(d, writing_, "/series/" + c));
+    }
+    const std::vector<std::string> names = members(file_, "/snapshots", writing_);
+    for (std::size_t k = 0; k < names.size(); ++k) {
       char name[32];
-      std::snprintf(name, sizeof name, "/snapshots/%05llu", static_cast<unsigned long long>(k));
+      std::snprintf(name, sizeof name, "/snapshots/%05zu", k);
+      if (names[k] != name + 11)
+        throw OutputError(writing_ + ": the adopted snapshots are not numbered 0 to " +
+                          std::to_string(names.size() - 1));
       Handle s(H5Gopen2(file_, name, H5P_DEFAULT), H5Gclose, writing_,
                std::string("opening ") + name);
       double time = 0;
@@ -377,12 +540,9 @@ void RunFile::adoptRecord(std::int64_t from, const std::string& under) {
       check(H5Aread(a, H5T_NATIVE_DOUBLE, &time), writing_, std::string(name) + " time");
       Handle d(H5Dopen2(s, "density", H5P_DEFAULT), H5Dclose, writing_,
                std::string(name) + " density");
-      Handle space(H5Dget_space(d), H5Sclose, writing_, std::string(name) + " density");
-      hsize_t n = 0;
-      if (H5Sget_simple_extent_dims(space, &n, nullptr) < 0)
-        hdf5::fail(writing_, std::string("the extent of ") + name + "/density");
-      snapshots_.push_back({name, time, static_cast<std::size_t>(n)});
+      snapshots_.push_back({name, time, static_cast<std::size_t>(rowsOf(d, writing_, name))});
     }
+    segmented_.snapshots = snapshots_.size();
   });
   flush();
   std::vector<XdmfSnapshot> entries;

@@ -235,6 +235,125 @@ TEST(Restart, CheckpointAtTheScenesCadenceSurvivesSigkill) {
   expectSameRun(whole + "/small_tank.h5", part + "/small_tank.h5");
 }
 
+// The record segments of checkpoint directory `part` (Checkpoint.hpp): the one chain's files in
+// order.
+std::vector<fs::path> recordSegments(const std::string& part) {
+  std::vector<fs::path> chains;
+  for (const auto& e : fs::directory_iterator(part + "/small_tank.checkpoint.record"))
+    chains.push_back(e.path());
+  EXPECT_EQ(chains.size(), 1u) << "one chain of segments";
+  std::vector<fs::path> segments;
+  for (int k = 0; !chains.empty(); ++k) {
+    char name[16];
+    std::snprintf(name, sizeof name, "%05d.h5", k);
+    if (!fs::exists(chains[0] / name)) break;
+    segments.push_back(chains[0] / name);
+  }
+  return segments;
+}
+
+// Each checkpoint writes what the record gained since the one before: over 21 checkpoints the
+// segments hold every snapshot once and in order, together about one run file. (A copy of the
+// whole record at each checkpoint, as before, held the first snapshot 21 times and some ten run
+// files in all.) The restart from them continues the run bit for bit, and the finished run
+// removes them.
+TEST(Restart, CheckpointSegmentsHoldEachSnapshotOnce) {
+  const std::string scene = editedScene(
+      {{"end_time = 0.02", "end_time = 2.5"},
+       {"gravity = [0.0, -9.81]", "gravity = [0.0, 0.0]"},
+       {"snapshot_interval = 0.01", "snapshot_interval = 0.05\ncheckpoint_interval = 0.1"}});
+  const fs::path dir = fs::path(scene).parent_path();
+  const std::string whole = (dir / "whole").string(), part = (dir / "part").string();
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  EXPECT_FALSE(fs::exists(whole + "/small_tank.checkpoint.record"));
+  const ProgramResult stopped =
+      runSph("run '" + scene + "' --out '" + part + "' --threads 1 --stop-at 2.0 --quiet");
+  ASSERT_EQ(stopped.exitCode, 0) << stopped.output;
+  const std::vector<fs::path> segments = recordSegments(part);
+  // Checkpoints at 0.1, 0.2, ... up to the stop's (the last near 2.0).
+  EXPECT_GE(segments.size(), 20u);
+  EXPECT_LE(segments.size(), 21u);
+  std::vector<std::string> snapshots;
+  double bytes = 0;
+  for (const fs::path& segment : segments) {
+    bytes += static_cast<double>(fs::file_size(segment));
+    for (const std::string& s : groupMembers(segment.string(), "/snapshots"))
+      snapshots.push_back(s);
+  }
+  ASSERT_GE(snapshots.size(), 40u);  // 0, 0.05, ..., about 2.0
+  for (std::size_t k = 0; k < snapshots.size(); ++k) {
+    char name[16];
+    std::snprintf(name, sizeof name, "%05zu", k);
+    EXPECT_EQ(snapshots[k], name) << "snapshot " << k << " of the segments";
+  }
+  const double runFile = static_cast<double>(fs::file_size(whole + "/small_tank.h5"));
+  EXPECT_LT(bytes, 1.5 * runFile) << "the segments hold " << bytes << " bytes";
+  const std::string checkpoint = part + "/small_tank.checkpoint.h5";
+  const ProgramResult c = runSph("run --restart '" + checkpoint + "' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  expectSameRun(whole + "/small_tank.h5", part + "/small_tank.h5");
+  EXPECT_FALSE(fs::exists(checkpoint));
+  EXPECT_FALSE(fs::exists(part + "/small_tank.checkpoint.record"));
+}
+
+// A full disk part way: a tmpfs of its own (in a user and mount namespace: unshare -rm, no root
+// needed) filled, after the first checkpoint, to 24 kB from full. The run stops with exit 4 at
+// the next checkpoint it cannot write; the run file is readable, marked output_error; the
+// checkpoint left is the last whole one, and on a disk with room it continues the run bit for
+// bit. Checkpoints every 0.1 s and snapshots only at the ends, so that a checkpoint meets the full
+// disk before a snapshot's room check does.
+TEST(Restart, FullDiskKeepsTheLastCheckpointRestartable) {
+  const std::string scene = editedScene(
+      {{"end_time = 0.02", "end_time = 2.5"},
+       {"gravity = [0.0, -9.81]", "gravity = [0.0, 0.0]"},
+       {"snapshot_interval = 0.01", "snapshot_interval = 2.5\ncheckpoint_interval = 0.1"}});
+  const fs::path dir = fs::path(scene).parent_path();
+  const std::string whole = (dir / "whole").string(), copy = (dir / "copy").string();
+  const std::string mount = (dir / "disk").string(), script = (dir / "full_disk.sh").string();
+  ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
+  fs::create_directories(copy), fs::create_directories(mount);
+  writeText(script,
+            "mount -t tmpfs -o size=4m tmpfs \"$1\" || exit 90\n"
+            "\"$2\" run \"$3\" --out \"$1/out\" --threads 1 --quiet > \"$4/log.txt\" 2>&1 &\n"
+            "pid=$!\n"
+            "n=0\n"
+            "while [ ! -e \"$1/out/small_tank.checkpoint.h5\" ] && [ $n -lt 20000 ]; do\n"
+            "  n=$((n + 1)); sleep 0.001\n"
+            "done\n"
+            "avail=$(df -k --output=avail \"$1\" | tail -n 1)\n"
+            "dd if=/dev/zero of=\"$1/filler\" bs=1024 count=$((avail - 24)) 2>/dev/null\n"
+            "wait $pid\n"
+            "rc=$?\n"
+            "rm -f \"$1/filler\"\n"
+            "cp -a \"$1/out/.\" \"$4/\"\n"
+            "exit $rc\n");
+  const std::string command = "unshare -rm sh '" + script + "' '" + mount + "' '" + SPH_EXE +
+                              "' '" + scene + "' '" + copy + "' 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buffer[4096];
+  while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status)) << output;
+  ASSERT_NE(WEXITSTATUS(status), 90) << "no tmpfs could be mounted (unshare -rm): " << output;
+  const std::string log = readText(copy + "/log.txt");
+  EXPECT_EQ(WEXITSTATUS(status), 4) << output << log;
+  EXPECT_NE(log.find("No space left on device"), std::string::npos) << log;
+  const std::string partial = copy + "/small_tank.h5.partial";
+  EXPECT_EQ(stringAttribute(partial, "/", "status"), "output_error");
+  EXPECT_FALSE(readDoubles(partial, "/snapshots/00000/density").empty());
+  const std::string checkpoint = copy + "/small_tank.checkpoint.h5";
+  ASSERT_TRUE(fs::exists(checkpoint)) << log;
+  EXPECT_FALSE(fs::exists(checkpoint + ".partial"));
+  const double at = *doubleAttribute(checkpoint, "/", "time");
+  EXPECT_GE(at, 0.1);
+  EXPECT_LT(at, 2.5);
+  const ProgramResult c = runSph("run --restart '" + checkpoint + "' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  expectSameRun(whole + "/small_tank.h5", copy + "/small_tank.h5");
+}
+
 // A checkpoint of the small tank stopped at 0.01 s, for the damage below.
 std::string tankCheckpoint(const std::string& out) {
   const ProgramResult r = runSph("run '" + scenePath("small_tank.toml") + "' --out '" + out +
@@ -282,6 +401,21 @@ TEST(Restart, MissingOrDamagedCheckpointIsBadInput) {
     H5Fclose(f);
   }
   expectRefused(edited, "are not the ones it holds: it is damaged");
+  // Without its record segments (moved on its own), or with another run's in their place.
+  const std::string moved = out + "/moved/small_tank.checkpoint.h5";
+  fs::create_directories(out + "/moved");
+  fs::copy_file(checkpoint, moved);
+  expectRefused(moved, "its record segment");
+  const std::string other = out + "/other";
+  ASSERT_TRUE(fs::exists(tankCheckpoint(other)));
+  const auto run = stringAttribute(checkpoint, "/", "record_run");
+  const auto otherRun = stringAttribute(other + "/small_tank.checkpoint.h5", "/", "record_run");
+  ASSERT_TRUE(run && otherRun);
+  EXPECT_NE(*run, *otherRun);
+  fs::create_directories(out + "/moved/small_tank.checkpoint.record/" + *run);
+  fs::copy_file(other + "/small_tank.checkpoint.record/" + *otherRun + "/00000.h5",
+                out + "/moved/small_tank.checkpoint.record/" + *run + "/00000.h5");
+  expectRefused(moved, "is not the one it wrote");
   // A scene and --restart together, or neither.
   const ProgramResult both =
       runSph("run '" + scenePath("small_tank.toml") + "' --restart '" + checkpoint + "' --quiet");

@@ -15,8 +15,7 @@ struct RunLimits {
   double maxSteps = 1e9;   // a year at 30 steps a second, far beyond any run of this solver
   // A guard against an interval typed too small (1e-300 wrote a snapshot every step): 1e4
   // snapshots are 100 a second of a 100 s run. The output's size is checked apart (outDir). The
-  // same bound for the checkpoints (output.checkpoint_interval), each a copy of the run file so
-  // far, so that C of them write about C/2 run files.
+  // same bound for the checkpoints (output.checkpoint_interval), each of which writes the state.
   double maxSnapshots = 1e4;
   std::string outDir = ".";  // the output's estimated size is compared with its free space
 };

@@ -59,13 +59,33 @@ class RunFile {
   // partial one. The file takes no more writes.
   void finish();
 
-  // The record so far (/series, /snapshots and /packing, those that exist) copied into the open
-  // HDF5 file `into` under the group `under` (a checkpoint: Checkpoint.cpp); failures throw
+  // A checkpoint's share of the record (Checkpoint.cpp): what was added to it since the last
+  // segment, so that each snapshot and series value is written to the checkpoints once. The
+  // first segment is the record so far (/series, /snapshots and /packing, those that exist); each
+  // later one the snapshots since and each series column's rows since, with the attribute
+  // `rows_from` (the rows before them). Written into the open HDF5 file `into`; failures throw
   // OutputError naming `intoPath`. Buffered series values are not copied: append them first.
-  void copyRecordTo(std::int64_t into, const std::string& under, const std::string& intoPath);
-  // The record under `under` of the open HDF5 file `from` (a checkpoint) copied into this file,
-  // which continues it: its snapshots become this file's first, and its XDMF lists them.
+  // Returns where the record then ends; segmented() takes it once the segment is kept.
+  struct RecordEnd {
+    bool any = false;  // a segment has been kept (else the next one starts the record)
+    std::size_t snapshots = 0;
+    std::vector<std::pair<std::string, std::uint64_t>> rows;  // series column, its rows
+  };
+  RecordEnd writeRecordSegment(std::int64_t into, const std::string& intoPath);
+  void segmented(RecordEnd end) { segmented_ = std::move(end); }
+  // Segments (their open HDF5 files, in order; the first starts the record) copied into this
+  // file, which continues the record: their snapshots become this file's first, its XDMF lists
+  // them, and the next segment starts after them. A segment that does not continue the ones
+  // before it is an OutputError naming `fromPaths`' entry.
+  void adoptRecordSegments(const std::vector<std::int64_t>& from,
+                           const std::vector<std::string>& fromPaths);
+  // The record of the open HDF5 file `from` under the group `under` (a checkpoint of the first
+  // format, which held the whole record) adopted as a first segment.
   void adoptRecord(std::int64_t from, const std::string& under);
+
+  // A write beside the file failed (a checkpoint): marks it status "output_error" with `why`
+  // where it still can; it takes no more writes.
+  void outputFailedBeside(const std::string& why) { markFailed(why); }
 
   const std::string& path() const { return path_; }            // where finish() puts it
   const std::string& writingPath() const { return writing_; }  // <path>.partial until then
@@ -89,6 +109,8 @@ class RunFile {
     std::size_t n;
   };
   std::vector<Entry> snapshots_;
+  RecordEnd segmented_;       // where the last kept segment ends
+  void adoptedSnapshots();    // snapshots_, segmented_ and the XDMF from the adopted record
   bool xdmfWritten_ = false;  // the partial sidecar holds snapshots_ (appended to from then on)
 };
 
