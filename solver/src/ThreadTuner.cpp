@@ -69,16 +69,23 @@ std::vector<double> ThreadTuner::ratios() const {
   return ratio;
 }
 
-bool ThreadTuner::clear() const {
+bool ThreadTuner::unanimous() const {
   const auto ratio = ratios();
-  if (ratio.size() < 2) return false;
+  if (ratio.empty()) return false;
   const auto [low, high] = std::minmax_element(ratio.begin(), ratio.end());
   return *high < 1 / s_.clearly || *low > s_.clearly;
 }
 
+bool ThreadTuner::clear() const {
+  return perStepOne_.size() >= 2 && unanimous();
+}
+
 void ThreadTuner::decide() {
   const int choice = median(ratios()) < 1.0 ? max_ : 1;
-  gap_ = choice == choice_ ? std::min(2 * gap_, s_.longestGap) : s_.shortestGap;
+  // A choice the rounds did not agree on (a burst of other work in some window) is tried again
+  // after the shortest gap: where a stall of the host decided one thread on a machine that gives
+  // two, a doubled gap kept the run on one thread for seconds (issue 37).
+  gap_ = choice == choice_ && unanimous() ? std::min(2 * gap_, s_.longestGap) : s_.shortestGap;
   choice_ = choice;
   reference_ = median(choice == 1 ? perStepOne_ : perStepAll_);
   phase_ = Phase::run, current_ = Window(), runSeconds_ = 0, slowWindows_ = 0;

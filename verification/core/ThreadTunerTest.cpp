@@ -162,6 +162,31 @@ TEST(ThreadTuner, AChangedChoiceShortensTheGapAgain) {
   EXPECT_EQ(used[43], 2);
 }
 
+// All threads twice as fast (0.5 s a step against 1 s), but in the first two trials the host takes
+// the second core during the all-thread windows of rounds 1 and 3 (5 s a step): each trial's
+// median picks one thread though its rounds disagree. The second such choice must not double the
+// gap: the third trial, on a machine whole again, comes after the shortest gap and picks all
+// threads. Window 1 (2 steps a count), 3 rounds, gaps of 2 to 8 trial times.
+TEST(ThreadTuner, AChoiceTheRoundsDisagreeOnIsCheckedAgainSoon) {
+  sph::ThreadTuner tuner(2, false, steps(1, 3, 2, 8));
+  long trialsSeen = 0;
+  int allInTrial = 0;  // all-thread steps of the current trial
+  const auto used = counts(tuner, 164, [&](int threads, int) {
+    if (tuner.trials() != trialsSeen) trialsSeen = tuner.trials(), allInTrial = 0;
+    if (threads == 1) return 1.0;
+    const int round = allInTrial++ / 2;
+    return tuner.trials() < 2 && round != 1 ? 5.0 : 0.5;
+  });
+  // Trial 1: steps 0-11, 2 x 5 + 2 + 2 x 0.5 + 2 + 2 x 5 + 2 = 27 s, then 2 x 27 s on one thread
+  // (12-65); trial 2 the same (66-77), and again the shortest gap (78-131; a doubled gap ran to
+  // 185). Trial 3 from 132 is unanimous after two rounds (132-139): all threads from 140 on, for
+  // the shortest gap after a change (140-163).
+  for (int k = 78; k < 132; ++k) EXPECT_EQ(used[k], 1) << k;
+  EXPECT_EQ(used[132], 2);
+  for (int k = 140; k < 164; ++k) EXPECT_EQ(used[k], 2) << k;
+  EXPECT_EQ(tuner.trials(), 3);
+}
+
 TEST(ThreadTuner, ASlowerRunTriesAgainAtOnce) {
   // All threads faster until step 100, when another process takes a core: all threads 4 times
   // slower. The gap (64 trials) would run to the end; two slow windows start a trial instead,

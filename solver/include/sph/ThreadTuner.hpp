@@ -19,11 +19,12 @@
 // whoever wants it.
 //
 // The chosen count then runs for `gap` times the trial's wall time (so at most 1/gap of a run is
-// spent on trials): the gap doubles from shortestGap to longestGap while the choice holds, and
-// goes back to shortestGap when it changes. While all threads run, two windows in a row slower per
-// step than the trial measured by `slowdown` (a process took a core) start a trial at once. One
-// thread is not watched so: it slows down by what other work takes from it, which a second thread
-// would not give back. `fixed`: every step on all threads.
+// spent on trials): the gap doubles from shortestGap to longestGap while the choice holds and its
+// rounds agree (clearly), and goes back to shortestGap when it changes or the rounds disagree.
+// While all threads run, two windows in a row slower per step than the trial measured by `slowdown`
+// (a process took a core) start a trial at once. One thread is not watched so: it slows down by
+// what other work takes from it, which a second thread would not give back. `fixed`: every step on
+// all threads.
 #include <vector>
 
 namespace sph {
@@ -60,7 +61,8 @@ class ThreadTuner {
   };
   bool add(Window& w, double seconds) const;  // true once w is full
   std::vector<double> ratios() const;         // all threads' time per step over one's, by round
-  bool clear() const;
+  bool unanimous() const;                     // every round so far favours one count by `clearly`
+  bool clear() const;                         // two rounds or more, unanimous
   void startTrial();
   void decide();
 
