@@ -27,7 +27,9 @@ struct Decay {
   double errorAtEnd;  // |max|v| / exact - 1| at the end
 };
 
-Decay taylorGreen(const std::string& kernel, int n, double T) {
+// `physics` and `numerics`: extra lines of those tables.
+Decay taylorGreen(const std::string& kernel, int n, double T, const std::string& physics = "",
+                  const std::string& numerics = "") {
   std::ostringstream s;
   s.precision(17);
   s << "name = \"taylor_green\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n"
@@ -35,8 +37,9 @@ Decay taylorGreen(const std::string& kernel, int n, double T) {
        "\"periodic\"\n"
     << "[[phase]]\nname = \"fluid\"\nrho0 = 1.0\nc0 = 10.0\nmu = " << 1.0 / kRe << "\np0 = " << kP0
     << "\n[[fluid]]\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n[physics]\nmorris_viscosity = true\n"
-    << "[numerics]\nkernel = \"" << kernel << "\"\ndx = " << 1.0 / n << "\nend_time = " << T
-    << "\n";
+    << physics << "[numerics]\nkernel = \"" << kernel << "\"\ndx = " << 1.0 / n
+    << "\nend_time = " << T << "\n"
+    << numerics;
   const Scene sc = parseScene(s.str(), "taylor_green");
   Particles<2> p = latticeParticles<2>(sc);
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -96,6 +99,37 @@ TEST(TaylorGreen, DecayRatePerKernel) {
     EXPECT_TRUE(r.check("Taylor-Green |max|v| / exact - 1| at t = 1, " + kernel, d.errorAtEnd,
                         "<=", 0.8,
                         "theory 0; measured 0.44-0.69 (disorder, see comment): regression bound"));
+  }
+}
+
+// Issue 31: the disorder that makes the vortex decay too fast is what particle shifting removes.
+// With the delta-plus shift (Sun et al. 2017; ParticleShifting.hpp) at h/dx 2 the fitted rate is
+// the viscous one: measured at 50^2 over t <= 1, quadratic +3.12 %, Wendland C2 -0.06 %, and the
+// named model (Wendland C2, Fourtakas diffusion delta 0.1, delta-plus) +1.05 %, each tracking
+// exp(-8 pi^2 t / Re) within 5 % to t = 1 (end errors 0.024, 0.014, 0.014). Lind's shift (D
+// proportional to the particle's own speed, zero at the vortex's stagnation points) left the
+// Wendland vortex at +29.7 %, and Wendland at h/dx 2 without shifting at +47.3 %. The bar is the
+// issue's: the rate within 5 % of 8 pi^2 / Re at 50^2 or finer.
+TEST(TaylorGreen, DeltaPlusShiftingDecaysAtTheViscousRate) {
+  Results r;
+  const double T = 1.0, exact = 8 * pi * pi / kRe;
+  const std::string shift = "shifting = \"delta_plus\"\n", hOverDx2 = "h_over_dx = 2.0\n";
+  const std::string diffusion = "density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"\n";
+  struct Model {
+    std::string name, kernel, physics;
+  };
+  for (const Model& m : {Model{"quadratic, delta-plus", "quadratic", shift},
+                         Model{"wendland_c2, delta-plus", "wendland_c2", shift},
+                         Model{"named model", "wendland_c2", shift + diffusion}}) {
+    const Decay d = taylorGreen(m.kernel, 50, T, m.physics, hOverDx2);
+    std::printf("%s (h/dx 2): decay rate %.4f (exact %.4f, %+.2f %%), within 5 %% until t = %.2f\n",
+                m.name.c_str(), d.rate, exact, 100 * (d.rate / exact - 1), d.trackedTo);
+    r.figure("Taylor-Green (Re 100, 50^2, h/dx 2) fitted decay rate / (8 pi^2 / Re), " + m.name,
+             d.rate / exact, "theory 1");
+    EXPECT_TRUE(
+        r.check("Taylor-Green (Re 100, 50^2, h/dx 2) |decay rate / (8 pi^2 / Re) - 1|, " + m.name,
+                std::abs(d.rate / exact - 1), "<=", 0.05,
+                "issue 31's bar; measured 0.0006-0.031 (comment)"));
   }
 }
 
