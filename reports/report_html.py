@@ -106,6 +106,7 @@ def models_side_by_side(criteria: list) -> str:
             c = n or p
             cls = "fail" if judged is not None and judged.outcome == FAIL else ""
             what = c.metric.partition(": ")[2] if c.kind != "validation" else c.metric
+            where = "run file, validation/criteria.toml" if c.kind == "validation" else f"validate.py, {_twin(c.case)}"
             run = _twin(r["key"][2])
             if p is not None and n is not None and (p.threshold, p.source) != (n.threshold, n.source):
                 thr = (f"paper: {escape(p.comparison)} {_fmt(p.threshold)}<br>named: {escape(n.comparison)} "
@@ -113,8 +114,9 @@ def models_side_by_side(criteria: list) -> str:
                 src = f"paper: {escape(p.source)}<br>named: {escape(n.source)}"
             else:
                 thr, src = f"{escape(c.comparison)} {_fmt(c.threshold)}", escape(c.source)
-            body.append(f'<tr class="{cls}"><td>{escape(run)}</td><td class="crit">{escape(what)}</td>'
-                        f"{_measured(p)}{_measured(n)}<td class=\"num\">{thr}</td><td>{src}</td></tr>")
+            body.append(f'<tr class="{cls}"><td>{escape(run)}</td><td class="crit">{escape(what)}'
+                        f'<br><span class="note">{escape(where)}</span></td>{_measured(p)}{_measured(n)}'
+                        f'<td class="num">{thr}</td><td>{src}</td></tr>')
         note = ("the named model's column is the verdict's; the paper's failures are findings" if has_named else
                 "no named-model run in this case: the paper's model is its model and its rows are the verdict's")
         parts.append(f"<h3>{escape(case)}</h3><p class=\"note\">{note}.</p>"
