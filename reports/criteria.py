@@ -10,7 +10,7 @@ import tomllib
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from runfile import family, read_results, read_runs
+from runfile import NAMED, PAPER, family, model_of, read_results, read_runs
 
 COMPARISONS = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge, "==": operator.eq}
 PASS, FAIL, NOT_RUN = "pass", "fail", "not run"
@@ -32,6 +32,8 @@ class Criterion:
     run_time_s: float | None = None
     kind: str = "validation"  # or "verification"
     id: str = ""
+    model: str = ""  # PAPER or NAMED for a validation run or validate.py check; "" for a verification test
+    family: str = ""  # the validation case (dam_break, ..., two_fluids) of a run or validate.py check
 
     def as_dict(self) -> dict:
         return asdict(self)
@@ -80,7 +82,8 @@ def run_criteria(runs: list, table: dict) -> list:
         case = family(run.scene_name, table)
         seen_cases.add(case)
         wall = run.metrics.get("wall_time_s")
-        common = dict(case=case, run=run.label, run_time_s=wall if isinstance(wall, (int, float)) else None)
+        common = dict(case=case, run=run.label, run_time_s=wall if isinstance(wall, (int, float)) else None,
+                      model=model_of(run.scene_name), family=case)
         if run.read_error:
             c = Criterion(metric="run file readable", comparison="==", threshold=True, source="reports/SCHEMA.md",
                           measured=False, **common)
@@ -98,7 +101,7 @@ def run_criteria(runs: list, table: dict) -> list:
     for case in sorted(set(table) - seen_cases):
         for e in table[case]:
             out.append(Criterion(case=case, run="", metric=e["metric"], comparison=e["comparison"],
-                                 threshold=e["threshold"], source=e["source"],
+                                 threshold=e["threshold"], source=e["source"], family=case,
                                  message="not run: no run file of this scene"))
     return out
 
@@ -112,11 +115,15 @@ def verification_criteria(results: list) -> list:
                           threshold=True, source="reports/SCHEMA.md", measured=False, kind="verification")
             out.append(_decide(c, f"; {res.read_error}"))
             continue
+        validation = res.test.startswith("validation.")  # validate.py's checks: a model and a case each
         for check in res.data.get("checks", []):
             comparison = check.get("comparison", "<=")
-            c = Criterion(case=res.test, run=name, metric=str(check.get("name", "?")), comparison=comparison,
+            metric = str(check.get("name", "?"))
+            model = str(check.get("model") or model_of(metric.split(": ", 1)[0])) if validation else ""
+            c = Criterion(case=res.test, run=name, metric=metric, comparison=comparison,
                           threshold=check.get("threshold"), source=str(check.get("source", "")),
-                          measured=check.get("measured"), kind="verification")
+                          measured=check.get("measured"), kind="verification", model=model,
+                          family=str(res.data.get("case") or "") if validation else "")
             if comparison not in COMPARISONS:
                 c.outcome, c.message = FAIL, f"unknown comparison {comparison!r}"
                 out.append(c)
@@ -153,3 +160,20 @@ def collect(runs_dir, results_dir, criteria_file: Path = DEFAULT_CRITERIA, runs=
 def counts(found: list) -> dict:
     return {"total": len(found), "passed": sum(c.outcome == PASS for c in found),
             "failed": sum(c.outcome == FAIL for c in found), "not_run": sum(c.outcome == NOT_RUN for c in found)}
+
+
+def judged(found: list) -> list:
+    """The criteria the verdict is about (issue 31): every verification test, and of each validation case the
+    named model's criteria; where a case has no named-model criterion (the two-fluid scenes: the solver refuses
+    density diffusion with two phases) its paper's criteria, the model that case runs. A case's named-model check
+    that lost its runs still records a failed criterion (validate.py: "run file present"), so a missing named run
+    never hands the verdict back to the paper's rows."""
+    named_cases = {c.family for c in found if c.model == NAMED}
+    return [c for c in found if c.model != PAPER or c.family not in named_cases]
+
+
+def findings(found: list) -> list:
+    """The paper's model's criteria in the cases the named model runs: shown beside the named model's, every
+    failure listed, none of them in the verdict."""
+    kept = {id(c) for c in judged(found)}
+    return [c for c in found if id(c) not in kept]

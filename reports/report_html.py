@@ -6,6 +6,7 @@ import re
 from html import escape
 
 from criteria import FAIL, NOT_RUN, PASS
+from runfile import NAMED, PAPER
 
 
 
@@ -40,7 +41,9 @@ def _notes(notes) -> str:
     return "".join(f'<p class="note">{escape(n)}</p>' for n in notes)
 
 
-def banner(c: dict, problems: list) -> str:
+def banner(c: dict, problems: list, paper: dict | None = None) -> str:
+    """The verdict on `c` (the named model's criteria and the verification tests'); `paper`, the paper's model's
+    tally where the named model runs too, is shown under it and decides nothing."""
     if c["failed"] or problems:
         cls, word = "b-fail", "FAIL"
     elif c["passed"]:
@@ -48,15 +51,92 @@ def banner(c: dict, problems: list) -> str:
     else:
         cls, word = "b-none", "NOT RUN"
     detail = f"{c['passed']} passed, {c['failed']} failed, {c['not_run']} not run, of {c['total']} criteria"
+    if paper and paper.get("total"):
+        detail = (f"the named model and the verification tests: {detail}<br>the paper's model (findings, not in the "
+                  f"verdict): {paper['passed']} passed, {paper['failed']} failed, {paper['not_run']} not run")
     extra = "".join(f'<p class="warn">{escape(p)}</p>' for p in problems)
     return f'<div class="banner {cls}">{word}<small>{detail}</small></div>{extra}'
+
+
+def _twin(text: str) -> str:
+    """A run or check name with the named model's tag taken off every run in it (issue 31)."""
+    return re.sub(r"_named(?=$|[ :/])", "", str(text))
+
+
+def _pair_key(c) -> tuple:
+    if c.kind == "validation":  # a criteria.toml criterion or the run status, on one run file
+        return (c.family, "run", _twin(c.run).rsplit("/", 1)[-1], c.metric, c.comparison)  # quick/x -> x
+    run, _, what = c.metric.partition(": ")  # validate.py: "<run>: <figure of merit>"
+    return (c.family, _twin(c.case), _twin(run), what, c.comparison)
+
+
+def model_rows(criteria: list) -> dict:
+    """{validation case: [{"key", "paper", "named"}]}: each criterion of the paper's model beside the named model's
+    criterion on the twin run (<run>_named) with the same figure of merit; either may be missing."""
+    cases: dict = {}
+    for c in criteria:
+        if c.model not in (PAPER, NAMED):
+            continue
+        rows = cases.setdefault(c.family or c.case, {})
+        row = rows.setdefault(_pair_key(c), {"key": _pair_key(c), PAPER: None, NAMED: None})
+        row[c.model] = row[c.model] or c
+    return {k: sorted(v.values(), key=lambda r: (r["key"][2], r["key"][1] != "run", r["key"][3]))
+            for k, v in sorted(cases.items())}
+
+
+def _measured(c) -> str:
+    if c is None:
+        return '<td class="r-notrun">&mdash;</td>'
+    cls = {FAIL: "r-fail", NOT_RUN: "r-notrun", PASS: "r-pass"}[c.outcome]
+    return (f'<td class="num" title="{escape(c.message, quote=True)}">{_fmt(c.measured)} '
+            f'<span class="{cls}">{escape(c.outcome.upper())}</span></td>')
+
+
+def models_side_by_side(criteria: list) -> str:
+    """Per validation case, one row per criterion: measured with the paper's model and with the named model, the
+    threshold and its source. The named model's result is the one the verdict counts; a case without named-model
+    runs is judged on the paper's rows (criteria.judged)."""
+    parts = []
+    for case, rows in model_rows(criteria).items():
+        has_named = any(r[NAMED] for r in rows)
+        body = []
+        for r in rows:
+            p, n = r[PAPER], r[NAMED]
+            judged = n if has_named else p
+            c = n or p
+            cls = "fail" if judged is not None and judged.outcome == FAIL else ""
+            what = c.metric.partition(": ")[2] if c.kind != "validation" else c.metric
+            where = "run file, validation/criteria.toml" if c.kind == "validation" else f"validate.py, {_twin(c.case)}"
+            run = _twin(r["key"][2])
+            if p is not None and n is not None and (p.threshold, p.source) != (n.threshold, n.source):
+                thr = (f"paper: {escape(p.comparison)} {_fmt(p.threshold)}<br>named: {escape(n.comparison)} "
+                       f"{_fmt(n.threshold)}")
+                src = f"paper: {escape(p.source)}<br>named: {escape(n.source)}"
+            else:
+                thr, src = f"{escape(c.comparison)} {_fmt(c.threshold)}", escape(c.source)
+            body.append(f'<tr class="{cls}"><td>{escape(run)}</td><td class="crit">{escape(what)}'
+                        f'<br><span class="note">{escape(where)}</span></td>{_measured(p)}{_measured(n)}'
+                        f'<td class="num">{thr}</td><td>{src}</td></tr>')
+        note = ("the named model's column is the verdict's; the paper's failures are findings" if has_named else
+                "no named-model run in this case: the paper's model is its model and its rows are the verdict's")
+        parts.append(f"<h3>{escape(case)}</h3><p class=\"note\">{note}.</p>"
+                     '<table class="criteria models"><tr><th>run (paper; named: <code>&lt;run&gt;_named</code>)</th>'
+                     "<th>criterion</th><th>measured, paper's model</th><th>measured, named model</th>"
+                     f"<th>threshold</th><th>source</th></tr>{''.join(body)}</table>")
+    if not parts:
+        return '<p class="note">not run: no validation run files or checks.</p>'
+    return ('<p class="note">The paper\'s model: Lobovsky &amp; Kren (2008) as published. The named model: the same '
+            "scenes with Fourtakas et al. (2019) density diffusion (delta 0.1) and the Wendland C2 kernel at h/dx 2 "
+            "(validation/make_variants.py, NAMED); each run file's kernel and terms are on its page below.</p>"
+            + "".join(parts))
 
 
 def case_tally(criteria: list) -> str:
     """One line per case: how many of its criteria passed, failed, were not run (failing cases first)."""
     tally: dict = {}
     for c in criteria:
-        t = tally.setdefault(c.case, {PASS: 0, FAIL: 0, NOT_RUN: 0})
+        t = tally.setdefault(c.case + (f" ({c.model}'s model)" if c.model == PAPER else
+                                       " (named model)" if c.model == NAMED else ""), {PASS: 0, FAIL: 0, NOT_RUN: 0})
         t[c.outcome] += 1
     order = sorted(tally, key=lambda k: (-tally[k][FAIL], -tally[k][NOT_RUN], k))
     rows = "".join(

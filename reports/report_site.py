@@ -33,7 +33,8 @@ ul.toc li{margin:.3em 0}
 # (file, title, one line on what the page holds)
 PAGES = [
     ("index.html", "Verdict", "the verdict, the criteria by case and the failures"),
-    ("validation.html", "Validation", "V&V 20 uncertainty of every figure of merit, then each run of the cases"),
+    ("validation.html", "Validation", "the paper's model beside the named model, V&V 20 uncertainty of every "
+                                      "figure of merit, then each run of the cases"),
     ("verification.html", "Verification & convergence", "observed orders against theory, recorded figures"),
     ("speed.html", "Speed vs accuracy", "error against wall time across resolutions and sweeps"),
     ("stability.html", "Stability", "the stability maps of the sweeps"),
@@ -78,10 +79,11 @@ def _wrap(html: str) -> str:
 
 
 def index(r: dict) -> str:
-    failed = [c for c in r["criteria"] if c.outcome == FAIL]
+    found = set(map(id, r.get("findings", [])))
+    failed = [c for c in r["criteria"] if c.outcome == FAIL and id(c) not in found]
     toc = "".join(f'<li><a href="{f}">{escape(t)}</a>: {escape(what)}</li>' for f, t, what in PAGES[1:])
     i = r["inputs"]
-    return (H.banner(r["counts"], r["problems"])
+    return (H.banner(r["counts"], r["problems"], r.get("counts_paper"))
             + f'<p class="note">runs: <code>{escape(i["runs"])}</code> ({i["run_files"]} files) &middot; results: '
             f'<code>{escape(i["results"])}</code> ({i["result_files"]} files) &middot; criteria: '
             f'<code>{escape(i["criteria"])}</code>. Also: <a href="summary.json">summary.json</a>, '
@@ -90,7 +92,11 @@ def index(r: dict) -> str:
             f"<section><h2>Failed criteria ({len(failed)})</h2>"
             + (H.summary_table(failed) if failed else '<p class="r-pass">none</p>')
             + '<p class="note">Every criterion: <a href="criteria.html">All criteria</a>.</p></section>'
-            f"<section><h2>Criteria by case</h2>{H.case_tally(r['criteria'])}</section>")
+            + (f"<section><h2>Findings: the paper's model's failed criteria ({len(r['findings'])})</h2>"
+               '<p class="note">The paper\'s model where the named model runs too: shown, not in the verdict; the '
+               'two models side by side on the <a href="validation.html">Validation</a> page.</p>'
+               + H.summary_table(r["findings"]) + "</section>" if r.get("findings") else "")
+            + f"<section><h2>Criteria by case</h2>{H.case_tally(r['criteria'])}</section>")
 
 
 def pages(r: dict) -> dict:
@@ -113,7 +119,9 @@ def pages(r: dict) -> dict:
                    "the code." if this.get("loaded") else "a quiet machine.") + "</p>")
     body = {
         "index.html": index(r),
-        "validation.html": (f"<section><h2>Validation uncertainty (ASME V&amp;V 20)</h2>{H.vv20(r.get('uncertainty', []))}"
+        "validation.html": (f"<section><h2>The paper's model and the named model</h2>"
+                            f"{H.models_side_by_side(r['criteria'])}</section>"
+                            f"<section><h2>Validation uncertainty (ASME V&amp;V 20)</h2>{H.vv20(r.get('uncertainty', []))}"
                             + "".join(H._img(u.get("figure"), u["name"]) for u in r.get("uncertainty", []))
                             + f"</section><section><h2>Validation cases</h2>{cases}</section>"),
         "verification.html": (f"<section><h2>Convergence</h2>{H.convergence(conv)}</section>"

@@ -205,10 +205,28 @@ def read_json_dir(directory: Path | None) -> list:
 
 _RESOLUTION_SUFFIX = re.compile(r"_(dx|h|n|res|a)[0-9][0-9.eE+-]*$")  # a: Martin & Moyce's a/dx
 
+# The two models of a validation case (issue 31): the paper's (Lobovsky & Kren), in the scenes as the paper gives
+# them, and the named model, the same scene with density diffusion and the Wendland kernel, named <scene>_named
+# (validation/make_variants.py, NAMED). The report judges the named model and shows the paper's beside it.
+PAPER, NAMED = "paper", "named"
+NAMED_SUFFIX = "_named"
+
+
+def model_of(scene_name: str) -> str:
+    """PAPER or NAMED: the model a scene (or a check named after its runs, "a_named vs b_named") runs."""
+    return NAMED if str(scene_name).endswith(NAMED_SUFFIX) else PAPER
+
+
+def paper_twin(scene_name: str) -> str:
+    """The paper's scene a named-model scene is the variant of (dam_break_dx0.025_named -> dam_break_dx0.025)."""
+    return str(scene_name).removesuffix(NAMED_SUFFIX)
+
 
 def family(scene_name: str, known=()) -> str:
     """The case a scene belongs to: the longest known case name that is the scene name or a prefix of it
-    followed by '_' (dam_break_dx0.005 -> dam_break); otherwise the name without a resolution suffix."""
+    followed by '_' (dam_break_dx0.005 -> dam_break); otherwise the name without a resolution suffix. A named-model
+    scene belongs to its paper twin's case."""
+    scene_name = paper_twin(scene_name)
     matches = [k for k in known if scene_name == k or scene_name.startswith(k + "_")]
     if matches:
         return max(matches, key=len)

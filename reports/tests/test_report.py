@@ -405,3 +405,71 @@ def test_a_recorded_peer_series_is_shown_as_a_dated_reference(tmp_path):
     page = (out / "performance.html").read_text()
     assert "a recorded reference (issue 7&#x27;s table, 2026-11-23), not measured by this run" in page
     assert "This run: load average" in page
+
+
+def validate_result(path, name, case, checks):
+    """A validate.py results file (validation/validate.py, Results.write): one check per (run, measured, pass)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    data = {"test": f"validation.{name}", "case": case, "issue": 4,
+            "checks": [{"name": f"{run}: wall impact time error", "measured": m, "threshold": 0.1, "comparison": "<=",
+                        "source": "Lobovsky et al. 2014 sensor 2 onset", "pass": m <= 0.1,
+                        "model": "named" if run.endswith("_named") else "paper"} for run, m in checks]}
+    path.write_text(json.dumps(data))
+
+
+def test_both_models_are_shown_and_the_verdict_follows_the_named_model(tmp_path, make_run):
+    """Issue 31: the paper's model's row and the named model's row of the same criterion are both on the validation
+    page; the banner is about the named model: a paper failure is a finding (listed, xfail in junit), a named
+    failure fails the report."""
+    runs, results = tmp_path / "runs", tmp_path / "results"
+    make_run(runs / "quick" / "dam_break_dx0.025.h5", "dam_break_dx0.025", max_volume_variation=0.0041)
+    make_run(runs / "quick" / "dam_break_dx0.025_named.h5", "dam_break_dx0.025_named", max_volume_variation=0.0017,
+             kernel="wendland_c2")
+    validate_result(results / "validation.dam_break_quick.json", "dam_break_quick", "dam_break",
+                    [("dam_break_dx0.025", 0.0489)])
+    validate_result(results / "validation.dam_break_quick_named.json", "dam_break_quick_named", "dam_break",
+                    [("dam_break_dx0.025_named", 0.0262)])
+    rc, out, summary = report(tmp_path, runs, results)
+    assert rc == 0 and not summary["problems"]  # the paper's volume 0.0041 > 0.003 fails: a finding only
+    assert summary["verdict"] == "PASS" and summary["counts"]["failed"] == 0
+    assert summary["counts_paper"]["failed"] == 1 and len(summary["findings"]) == 1
+    assert "quick/dam_break_dx0.025 | max_volume_variation < 0.003" in summary["findings"][0]
+    index = (out / "index.html").read_text()
+    assert 'class="banner b-pass">PASS' in index and "Findings: the paper's model's failed criteria (1)" in index
+    junit = ET.parse(out / "junit.xml").getroot()
+    xfails = [c for c in junit.iter("testcase") if (s := c.find("skipped")) is not None
+              and s.get("type") == "pytest.xfail"]
+    assert len(xfails) == 1 and not [c for c in junit.iter("testcase") if c.find("failure") is not None]
+    page = (out / "validation.html").read_text()
+    table = page[page.index("The paper's model and the named model"):page.index("Validation uncertainty")]
+    rows = re.findall(r"<tr[^>]*>(.*?)</tr>", table)
+    volume = [r for r in rows if ">max_volume_variation<" in r]
+    assert len(volume) == 1  # one row, both models in it
+    assert "0.0041 <span class=\"r-fail\">FAIL</span>" in volume[0] and "0.0017 <span class=\"r-pass\">PASS" in volume[0]
+    assert "&lt; 0.003" in volume[0] and "Lobovsky &amp; Kren" in volume[0]  # threshold and source
+    onset = [r for r in rows if "wall impact time error" in r]
+    assert len(onset) == 1 and "0.0489 <span" in onset[0] and "0.0262 <span" in onset[0]
+
+    # The same runs with the named model failing and the paper's passing: the report fails.
+    make_run(runs / "quick" / "dam_break_dx0.025.h5", "dam_break_dx0.025", max_volume_variation=0.0017)
+    make_run(runs / "quick" / "dam_break_dx0.025_named.h5", "dam_break_dx0.025_named", max_volume_variation=0.0041,
+             kernel="wendland_c2")
+    rc, out, summary = report(tmp_path, runs, results)
+    assert rc == 1 and summary["verdict"] == "FAIL" and not summary["problems"]
+    assert summary["counts"]["failed"] == 1 and summary["counts_paper"]["failed"] == 0 and not summary["findings"]
+    assert 'class="banner b-fail">FAIL' in (out / "index.html").read_text()
+
+
+def test_a_case_without_named_runs_is_judged_on_the_paper_model(tmp_path, make_run):
+    """The two-fluid scenes run the paper's model alone (density diffusion needs one phase): their paper rows
+    decide the verdict even when other cases run the named model."""
+    runs = tmp_path / "runs"
+    make_run(runs / "two_fluids.h5", "two_fluids", phases=("light", "heavy"), max_volume_variation=0.004)
+    make_run(runs / "dam_break.h5", "dam_break", max_volume_variation=0.004)
+    make_run(runs / "dam_break_named.h5", "dam_break_named", max_volume_variation=0.001, kernel="wendland_c2")
+    rc, out, summary = report(tmp_path, runs)
+    assert rc == 1 and summary["verdict"] == "FAIL"
+    failed = {c["run"] for c in summary["criteria"] if c["outcome"] == "fail"}
+    assert failed == {"two_fluids", "dam_break"}
+    assert [f.split(" | ")[0] for f in summary["findings"]] == ["dam_break"]  # a finding, not in the verdict
+    assert summary["counts"]["failed"] == 2  # two_fluids' two phase volumes
