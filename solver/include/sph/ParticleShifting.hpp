@@ -42,8 +42,11 @@
 //
 // Cost (perf record, dam break dx 0.01 with Fourtakas diffusion and Lind shifting to t = 0.1 s,
 // one thread, loaded 2-core VM): the trial evaluation with the sums 39 % of the time, the other,
-// without, 27 %; the marks near the surface 2 % and the per-particle rest 2 %. As a separate pass
-// the sums took 47 % (scalar, each pair twice, a cell list of its own).
+// without, 27 %; the marks near the surface 2 % and the per-particle rest 2 %. The dam break at
+// dx 0.005 to t = 0.3 s, 2 threads (--fixed-threads), CPU seconds of 5 alternated rounds, load
+// 8-11 on the 2 cores: with Fourtakas diffusion and Lind shifting 1.55 times the paper's scene
+// (medians 13.1 s against 8.2 s; rounds 1.49-1.82), above issue 31's 1.3. In the loop with the
+// sums the division of W_ij by W(dx) waits on the pair's square root, and accumulators spill.
 
 #include <memory>
 #include <string_view>
