@@ -44,7 +44,17 @@ unsigned menuIndex(TermSwitches t) {
   if (form > terms::DensityDiffusionForms::size)
     throw std::invalid_argument("menuIndex: density diffusion form " + std::to_string(form) +
                                 " is not one of the menu's");
-  return optional + terms::optionalSubsets * form;
+  if (!t.concentrationGradient) return optional + terms::optionalSubsets * form;
+  if (optional != terms::shiftingSubset)
+    throw std::invalid_argument(
+        "menuIndex: the concentration gradient is on the menu with every optional term only");
+  return terms::ratesEntries + form;
+}
+
+bool onMenu(TermSwitches t) {
+  return !t.concentrationGradient ||
+         (unsigned(t.artificialViscosity) | unsigned(t.morrisViscosity) << 1 |
+          unsigned(t.variableH) << 2) == terms::shiftingSubset;
 }
 
 template <int D>
@@ -60,13 +70,47 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms,
       work_(std::make_shared<Workspace>()) {
   static_assert(terms::optionalSubsets == 8 && terms::DensityDiffusionForms::size == 2,
                 "menuIndex covers every optional term and every form");
-  loop_ = pair_loop::menuLoop<D>(kernel, menuIndex(terms));
+  TermSwitches rates = terms;
+  rates.concentrationGradient = false;
+  loop_ = pair_loop::menuLoop<D>(kernel, menuIndex(rates));
+  ownSumsLoop_ = pair_loop::menuLoop<D>(kernel, menuIndex(terms));  // throws off the menu
 }
 
 template <int D>
 void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>& out,
-                                    const Vec<D>& g, NeighbourLists lists) {
-  loop_(parameters_, set, g, lists, *work_, out);
+                                    const Vec<D>& g, NeighbourLists lists, bool ownSums) {
+  (ownSums ? ownSumsLoop_ : loop_)(parameters_, set, g, lists, *work_, out);
+}
+
+template <int D>
+void ForceEvaluation<D>::markWithinSupport(const InteractionSet<D>& set, const char* marked,
+                                           char* near) const {
+  // The cells are half the reach (support h_max + skin) of the last build: every entry within
+  // the support of i lies in the 5^(D-1) rows of 5 cells around i's cell (as for the pair loop's
+  // kept lists, the motion since the build is within the skin: NeighbourLists).
+  const auto& cells = work_->cells;
+  const auto& order = cells.order();
+  const std::size_t nf = set.nFluid, haloEnd = set.haloEnd();
+  const double support = withKernel(kernel_, [](auto k) { return decltype(k)::support; });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const int i = order[k];
+    if (static_cast<std::size_t>(i) >= nf || !marked[i]) continue;
+    const Vec<D> xi = set.x[i];
+    const double hi = set.h[i];
+    cells.template forEachAdjacentRow<2>(cells.sortedCell(static_cast<int>(k)), [&](int b, int e) {
+      for (int kk = b; kk < e; ++kk) {
+        const std::size_t j = static_cast<std::size_t>(order[kk]);
+        const double reach = 0.5 * support * (hi + set.h[j]);
+        const double r2 = (xi - set.x[j]).squaredNorm();
+        // r2 > 0: a distinct particle at r = 0 adds nothing (as in the pair loop).
+        if (j == static_cast<std::size_t>(i) || !(r2 > 0.0) || !(r2 < reach * reach)) continue;
+        if (j < nf)
+          near[j] = 1;
+        else if (j < haloEnd)
+          near[set.source[j]] = 1;
+      }
+    });
+  }
 }
 
 template <int D>

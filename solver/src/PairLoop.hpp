@@ -325,7 +325,16 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   }
   const auto& order = w.cells.order();
   const std::size_t nPadded = n + lanes;
-  constexpr int recordSize = 8, extraSize = 2, rateWidth = D <= 2 ? 4 : 8;
+  // A rate record: d rho/dt, the dh/dt sum, dv/dt by axis (four doubles in 1-D and 2-D, with
+  // v_y = 0 in 1-D; five in 3-D), then the term set's own sums (TermSet::ownSums), if any; its
+  // width a power of two, so that 16 j times it over 16 is an addressing mode's scale.
+  constexpr int own = Terms::template ownSums<D>, rateUsed = (D <= 2 ? 4 : 5) + own;
+  constexpr int recordSize = 8, extraSize = 2,
+                rateWidth = rateUsed <= 4   ? 4
+                            : rateUsed <= 8 ? 8
+                                            : 16;
+  constexpr int ownAt = D <= 2 ? 4 : 5;  // where the own sums start in a rate record
+  static_assert(rateUsed <= rateWidth);
   w.rate = grown(w.rateStore, rateWidth * nPadded);
   if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
     w.scratch.resize(omp_get_max_threads());
@@ -346,6 +355,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   }
   const int nFluid = static_cast<int>(set.nFluid);
   out.resize(set.nFluid);
+  out.sumsWidth = own, out.sums.resize(own * set.nFluid);
   // Bands of two layers of cells: a point's forward neighbours lie in its own band and the next,
   // so the even bands can run at the same time, then the odd ones. Set up before the region when
   // the lists are reused, else by thread 0 after the cell list.
@@ -583,6 +593,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         const double* ei = extra + extraSize * i;
         const double mui = ei[0], rhoInvi = ei[1];
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
+        Vd accOwn[own > 0 ? own : 1] = {};            // the own sums
 
         int* nb;
         int count = 0;
@@ -702,6 +713,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
                                                    vy,
                                                    vz,
                                                    r2c,
+                                                   r,
+                                                   hInv,
                                                    vr,
                                                    hSum,
                                                    hSum2,
@@ -709,13 +722,14 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
                                                    inv.b,
                                                    inv.c};
           typename Terms::template Shares<D, Vd> si, sj;
-          pairTerms.template pair<D>(pair, si, sj);
+          pairTerms.template pair<D, Kernel>(pair, si, sj);
           constexpr auto writes = Terms::writes;
           if constexpr (writes.density) accRho += si.rho;
           if constexpr (writes.smoothingLength) accH += si.h;
           accX += si.v[0];
           if constexpr (D > 1) accY += si.v[1];
           if constexpr (D > 2) accZ += si.v[2];
+          for (int o = 0; o < own; ++o) accOwn[o] += si.own[o];
           // j's share, lane by lane into its record (live lanes only: the padding's is dropped).
           Vd jRho = writes.density ? sj.rho : Vd{}, jH = writes.smoothingLength ? sj.h : Vd{};
           Vd jX = sj.v[0], jY = D > 1 ? sj.v[1] : Vd{};
@@ -728,12 +742,27 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
               const Vd updated = load(rate) + lane[l];
               __builtin_memcpy(rate, &updated, sizeof updated);
             }
+            // The own sums after them: four at a time as the rates, the rest lane by lane.
+            for (int o = 0; o + lanes <= own; o += lanes) {
+              Vd a = sj.own[o], b = sj.own[o + 1], c = sj.own[o + 2], d = sj.own[o + 3];
+              transpose(a, b, c, d);
+              const Vd chunk[4] = {a, b, c, d};
+              for (int l = 0; l < live; ++l) {
+                double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l) + ownAt + o;
+                const Vd updated = load(rate) + chunk[l];
+                __builtin_memcpy(rate, &updated, sizeof updated);
+              }
+            }
+            for (int o = own / lanes * lanes; o < own; ++o)
+              for (int l = 0; l < live; ++l)
+                at(w.rate, rateWidth * sizeof(double) / 16, l)[ownAt + o] += sj.own[o][l];
           } else {
             const Vd jZ = sj.v[2];
             for (int l = 0; l < live; ++l) {
               double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
               rate[0] += jRho[l], rate[1] += jH[l], rate[2] += jX[l], rate[3] += jY[l];
               rate[4] += jZ[l];
+              for (int o = 0; o < own; ++o) rate[ownAt + o] += sj.own[o][l];
             }
           }
         }
@@ -742,9 +771,17 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           transpose(accRho, accH, accX, accY);
           const Vd updated = load(rate) + (((accRho + accH) + accX) + accY);
           __builtin_memcpy(rate, &updated, sizeof updated);
+          for (int o = 0; o + lanes <= own; o += lanes) {
+            Vd a = accOwn[o], b = accOwn[o + 1], c = accOwn[o + 2], d = accOwn[o + 3];
+            transpose(a, b, c, d);
+            const Vd chunk = load(rate + ownAt + o) + (((a + b) + c) + d);
+            __builtin_memcpy(rate + ownAt + o, &chunk, sizeof chunk);
+          }
+          for (int o = own / lanes * lanes; o < own; ++o) rate[ownAt + o] += sum(accOwn[o]);
         } else {
           rate[0] += sum(accRho), rate[1] += sum(accH), rate[2] += sum(accX);
           rate[3] += sum(accY), rate[4] += sum(accZ);
+          for (int o = 0; o < own; ++o) rate[ownAt + o] += sum(accOwn[o]);
         }
       }
       return work;
@@ -787,7 +824,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
     {
       const int* sorted = order.data();
       const double *rates = w.rate, *records = record;
-      double *dRho = out.drhodt.data(), *dH = out.dhdt.data();
+      double *dRho = out.drhodt.data(), *dH = out.dhdt.data(), *sums = out.sums.data();
       Vec<D>* dV = out.dvdt.data();
       const Vec<D> gravity = g;
       walk(mine, [=](std::int64_t k) {
@@ -799,6 +836,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         const double h = D <= 2 ? records[recordSize * k + 4] : hs[k];
         pairTerms.template finish<D>(r, {h, gravity});
         dRho[dst] = r.drhodt, dH[dst] = r.dhdt, dV[dst] = r.dvdt;
+        for (int o = 0; o < own; ++o) sums[own * dst + o] = rate[ownAt + o];
       });
     }
   }

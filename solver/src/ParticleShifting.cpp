@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sph/CellList.hpp"
+#include "sph/Parallel.hpp"
 
 namespace sph {
 
@@ -29,13 +30,51 @@ template <int D>
 ParticleShifting<D>::~ParticleShifting() = default;
 
 template <int D>
+void ParticleShifting<D>::start(const InteractionSet<D>& set, LineVector<Vec<D>>& shift) {
+  const std::size_t nf = set.nFluid;
+  shift.assign(nf, Vec<D>::Zero());
+  gradC_.assign(nf, Vec<D>::Zero()), g_.assign(nf, Vec<D>::Zero()), divR_.assign(nf, 0.0);
+  surface_.assign(nf, 0), near_.assign(nf, 0);
+}
+
+template <int D>
+void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
+                                     const Derivatives<D>& sums, const ForceEvaluation<D>& forces,
+                                     LineVector<Vec<D>>& shift) {
+  using Term = terms::ConcentrationGradient;
+  constexpr int width = Term::sums<D>;
+  const std::size_t nf = set.nFluid;
+  if (sums.sumsWidth != width || sums.sums.size() != width * nf)
+    throw std::logic_error("ParticleShifting: the evaluation has no concentration gradient");
+  // Every field is written below.
+  shift.resize(nf), gradC_.resize(nf), g_.resize(nf), divR_.resize(nf), surface_.resize(nf);
+  near_.assign(nf, 0);
+  if (nf == 0) return;
+  const double* s = sums.sums.data();
+  const double threshold = p_.surfaceThreshold;
+  Vec<D>*gradC = gradC_.data(), *g = g_.data();
+  double* divR = divR_.data();
+  char* surface = surface_.data();
+  forEachInShares(static_cast<std::int64_t>(nf), [=](std::int64_t i) {
+    const double* si = s + width * i;
+    for (int a = 0; a < D; ++a)
+      gradC[i][a] = si[Term::gradCAt + a], g[i][a] = si[Term::normalAt<D> + a];
+    divR[i] = si[Term::divRAt<D>];
+    surface[i] = divR[i] < threshold;
+  });
+  if (p_.freeSurface) {
+    near_ = surface_;
+    forces.markWithinSupport(set, surface_.data(), near_.data());
+  }
+  shiftsFrom(set, dt, shift);
+}
+
+template <int D>
 void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
                                      LineVector<Vec<D>>& shift) {
   const std::int64_t nf = static_cast<std::int64_t>(set.nFluid);
   const std::size_t haloEnd = set.haloEnd();
-  shift.assign(nf, Vec<D>::Zero());
-  gradC_.assign(nf, Vec<D>::Zero()), g_.assign(nf, Vec<D>::Zero()), divR_.assign(nf, 0.0);
-  surface_.assign(nf, 0), near_.assign(nf, 0);
+  start(set, shift);
   if (nf == 0) return;
   double hMax = 0.0;
   for (const double h : set.h) hMax = std::max(hMax, h);
@@ -114,12 +153,18 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
         });
       }
   });
+  shiftsFrom(set, dt, shift);
+}
 
+template <int D>
+void ParticleShifting<D>::shiftsFrom(const InteractionSet<D>& set, double dt,
+                                     LineVector<Vec<D>>& shift) {
+  const std::int64_t nf = static_cast<std::int64_t>(set.nFluid);
   double uMax = 0.0;
   if (p_.form == ShiftingForm::delta_plus)
     for (std::int64_t i = 0; i < nf; ++i) uMax = std::max(uMax, set.v[i].norm());
   const double A = p_.coefficient;
-  for (std::int64_t i = 0; i < nf; ++i) {
+  forEachInShares(nf, [&](std::int64_t i) {
     const double U = p_.form == ShiftingForm::delta_plus ? uMax : set.v[i].norm();
     Vec<D> dr = -(A * set.h[i] * U * dt) * gradC_[i];
     if (p_.freeSurface && near_[i]) {
@@ -132,7 +177,7 @@ void ParticleShifting<D>::operator()(const InteractionSet<D>& set, double dt,
       }
     }
     shift[i] = dr;
-  }
+  });
 }
 
 template class ParticleShifting<1>;

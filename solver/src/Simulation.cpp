@@ -68,12 +68,22 @@ void ghostDensitiesFromPressure(const Phase& water, InteractionSet<D>& set) {
 // EOS and g) of the scene's one phase.
 terms::TermParameters termParametersOf(const Scene& scene) {
   terms::TermParameters t{.beta = scene.beta, .diffusionDelta = scene.diffusionDelta};
+  t.spacing = scene.dx;
   if (scene.phases.empty()) return t;
   const Phase& water = scene.phases[0];
   t.soundSpeed = water.c0, t.rho0 = water.rho0, t.bulkModulus = water.bulkModulus();
   t.gammaInteger = static_cast<int>(water.gamma);
   for (std::size_t a = 0; a < scene.bodyAcceleration.size() && a < 3; ++a)
     t.g[a] = scene.bodyAcceleration[a];
+  return t;
+}
+
+// The scene's terms, and with particle shifting its pair sums (in the evaluations that ask)
+// where the menu has them with the scene's terms (else the shifting pass gathers them itself).
+TermSwitches termsOf(const Scene& scene) {
+  TermSwitches t = scene.terms;
+  t.concentrationGradient = scene.shifting.form != ShiftingForm::none;
+  if (!onMenu(t)) t.concentrationGradient = false;
   return t;
 }
 }  // namespace
@@ -85,7 +95,7 @@ template <int D>
 Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
     : scene_(scene),
       bounds_(boundariesOf<D>(scene)),
-      forces_(scene.kernel, scene.terms, termParametersOf(scene)),
+      forces_(scene.kernel, termsOf(scene), termParametersOf(scene)),
       boundary_(makeBoundary<D>(scene, bounds_)),
       y_(std::move(initial)),
       skinFraction_(scene.neighbourSkin) {
@@ -106,6 +116,7 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
                            std::to_string(static_cast<int>(scene.integrator)));
   if (scene.shifting.form != ShiftingForm::none)
     shifting_ = std::make_unique<ParticleShifting<D>>(scene.kernel, scene.shifting, scene.dx);
+  shiftingSums_ = termsOf(scene).concentrationGradient;
   id_.resize(y_.size());
   std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)
@@ -162,7 +173,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
 
 template <int D>
 void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& out,
-                          const Motion& motion) {
+                          const Motion& motion, bool shiftingSums) {
   std::int64_t n = static_cast<std::int64_t>(state.size());
   // The lists of the last build serve while no particle has moved, and no h grown, enough to
   // bring a pair that was not listed inside the support (2 d + 2 dh below the skin:
@@ -214,7 +225,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
     ghostDensitiesFromPressure(scene_.phases[0], set_);
   if (domain_) {
     if (!reuse) frameGrid(hMax);
-    forces_(set_, localRates_, g, {skin_, reuse});
+    forces_(set_, localRates_, g, {skin_, reuse}, false);
     out.resize(static_cast<std::size_t>(n));
     forEachInShares(n, [&](std::int64_t i) {
       const int k = ownedAt_[i];
@@ -222,7 +233,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
       out.dhdt[i] = localRates_.dhdt[k];
     });
   } else {
-    forces_(set_, out, g, {skin_, reuse});  // with F/rho of eq. (12)
+    forces_(set_, out, g, {skin_, reuse}, shiftingSums);  // with F/rho of eq. (12)
   }
   if (source_) source_(t, state, out);
   ++evaluations_;
@@ -566,8 +577,11 @@ struct Simulation<D>::Stepper {
   // f(y*) at t + `after` (sized by the evaluation), and with particle shifting the shifts the
   // final stage adds, from the interaction set of y* (the step's trial state) just built.
   void evaluate(double after) {
-    sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion);
-    if (sim.shifting_) (*sim.shifting_)(sim.set_, dt, sim.shift_);
+    sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion, sim.shiftingSums_);
+    if (sim.shiftingSums_)
+      (*sim.shifting_)(sim.set_, dt, sim.fStar_, sim.forces_, sim.shift_);
+    else if (sim.shifting_)
+      (*sim.shifting_)(sim.set_, dt, sim.shift_);
   }
 
   // Stage::trial: update, wrap, motion. Returns true.

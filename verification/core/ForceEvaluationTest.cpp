@@ -13,7 +13,9 @@
 // psi_ij = 2 (rho_j - rho_i) r_ji / (r_ij^2 + eta^2), and Fourtakas et al.'s (2019) form with
 // rho_j - rho_i less the hydrostatic difference -rho0^2 g . r_ij / (K S), S = sum_k x_j^k
 // x_i^(gamma-1-k), x = rho/rho0 (terms/DensityDiffusionFourtakas.hpp; S here by powers, there by
-// Horner).
+// Horner). And particle shifting's pair sums (terms/ConcentrationGradient.hpp, Lind et al. 2012):
+//   grad C_i = sum_j V_j (1 + 0.2 (W_ij / W(dx, h_ij))^4) grad_i W_ij,  g_i = sum_j V_j grad_i
+//   W_ij, div r_i = -sum_j V_j r_ij . grad_i W_ij,  V_j = m_j / rho_j.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -68,22 +70,31 @@ struct Reference {
   // Per particle, the sum of the magnitudes of the pair contributions: the scale of the
   // round-off of a sum (Higham, Accuracy and Stability, eq. 4.4: |error| <= (n-1) u sum|x_k|).
   std::vector<double> scaleV, scaleRho, scaleH;
+  // Particle shifting's sums (grad C, g, div r: 2 D + 1 a particle) and their scales.
+  std::vector<double> sums, scaleSums;
 };
 
 // The terms' parameters of every comparison: beta of the scenes; delta of Molteni & Colagrossi's
 // paper with the c0 of the heavier phase; for Fourtakas et al.'s form the lighter phase's EOS and
 // a g with a part along every axis (each of r_ij's components enters).
-const sph::terms::TermParameters parameters{.beta = 1.0,
-                                            .diffusionDelta = 0.1,
-                                            .soundSpeed = 30.0,
-                                            .rho0 = phases[0].rho0,
-                                            .bulkModulus = phases[0].bulkModulus(),
-                                            .gammaInteger = 7,
-                                            .g = {0.7, -9.81, 0.4}};
+// Shifting's W(dx) at randomSet's mean spacing dx of n particles.
+template <int D>
+sph::terms::TermParameters parametersFor(int n = 300) {
+  return {.beta = 1.0,
+          .diffusionDelta = 0.1,
+          .soundSpeed = 30.0,
+          .rho0 = phases[0].rho0,
+          .bulkModulus = phases[0].bulkModulus(),
+          .gammaInteger = 7,
+          .g = {0.7, -9.81, 0.4},
+          .spacing = std::pow(1.0 / n, 1.0 / D)};
+}
 // Every subset of the three optional terms times each density diffusion form (none, Molteni &
-// Colagrossi, Fourtakas et al.): the menu of terms/Menu.hpp.
-constexpr int menuSize = 24;
+// Colagrossi, Fourtakas et al.), then all three with shifting's pair sums and each form: the menu
+// of terms/Menu.hpp.
+constexpr int menuSize = 27;
 sph::TermSwitches switchesOf(int combo) {
+  if (combo >= 24) return {true, true, true, static_cast<sph::DensityDiffusion>(combo - 24), true};
   return {(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0,
           static_cast<sph::DensityDiffusion>(combo / 8)};
 }
@@ -91,7 +102,8 @@ std::string describe(sph::TermSwitches t) {
   return " artificial=" + std::to_string(t.artificialViscosity) +
          " morris=" + std::to_string(t.morrisViscosity) +
          " variable_h=" + std::to_string(t.variableH) +
-         " diffusion=" + std::to_string(static_cast<unsigned>(t.densityDiffusion));
+         " diffusion=" + std::to_string(static_cast<unsigned>(t.densityDiffusion)) +
+         " shifting_sums=" + std::to_string(t.concentrationGradient);
 }
 
 // Fourtakas et al.'s hydrostatic density difference rho_ji^H of the pair, by powers.
@@ -115,9 +127,12 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
   Reference<D> ref;
   ref.rates.resize(nf);
   ref.scaleV.assign(nf, 0.0), ref.scaleRho.assign(nf, 0.0), ref.scaleH.assign(nf, 0.0);
+  ref.sums.assign((2 * D + 1) * nf, 0.0), ref.scaleSums.assign((2 * D + 1) * nf, 0.0);
   for (std::size_t i = 0; i < nf; ++i) {
     sph::Vec<D> dv = sph::Vec<D>::Zero();
     double drho = 0.0, dh = 0.0;
+    double* sums = ref.sums.data() + (2 * D + 1) * i;
+    double* scales = ref.scaleSums.data() + (2 * D + 1) * i;
     for (std::size_t j = 0; j < s.size(); ++j) {
       if (j == i) continue;
       const sph::Vec<D> rij = s.x[i] - s.x[j], vij = s.v[i] - s.v[j];
@@ -128,6 +143,17 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
       const double eta2 = 0.01 * hij * hij;
       const double continuity = s.m[j] * vij.dot(gradW);
       drho += continuity;
+      if (t.concentrationGradient) {
+        const double V = s.m[j] / s.rho[j];
+        const double w =
+            sph::kernelValue<D>(kind, r, hij) / sph::kernelValue<D>(kind, par.spacing, hij);
+        const sph::Vec<D> gradC = V * (1.0 + 0.2 * std::pow(w, 4)) * gradW, normal = V * gradW;
+        for (int a = 0; a < D; ++a) {
+          sums[a] += gradC[a], scales[a] += std::abs(gradC[a]);
+          sums[D + a] += normal[a], scales[D + a] += std::abs(normal[a]);
+        }
+        sums[2 * D] -= V * rij.dot(gradW), scales[2 * D] += std::abs(V * rij.dot(gradW));
+      }
       ref.scaleRho[i] += std::abs(continuity);
       if (t.densityDiffusion != sph::DensityDiffusion::none) {
         const double hydrostatic = t.densityDiffusion == sph::DensityDiffusion::fourtakas
@@ -172,7 +198,7 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
 template <int D>
 double error(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t,
              const sph::Derivatives<D>& out) {
-  const Reference<D> ref = reference<D>(s, kind, t, parameters);
+  const Reference<D> ref = reference<D>(s, kind, t, parametersFor<D>());
   EXPECT_EQ(out.dvdt.size(), s.nFluid);
   double worst = 0.0;
   auto relative = [](double diff, double scale) { return scale > 0 ? diff / scale : diff; };
@@ -185,12 +211,21 @@ double error(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches
     else
       EXPECT_EQ(out.dhdt[i], 0.0);
   }
+  if (t.concentrationGradient) {
+    EXPECT_EQ(out.sumsWidth, 2 * D + 1);
+    EXPECT_EQ(out.sums.size(), ref.sums.size());
+    for (std::size_t k = 0; k < ref.sums.size() && k < out.sums.size(); ++k)
+      worst = std::max(worst, relative(std::abs(out.sums[k] - ref.sums[k]), ref.scaleSums[k]));
+  } else {
+    EXPECT_EQ(out.sumsWidth, 0);
+    EXPECT_TRUE(out.sums.empty());
+  }
   return worst;
 }
 
 template <int D>
 double compare(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t) {
-  sph::ForceEvaluation<D> forces(kind, t, parameters);
+  sph::ForceEvaluation<D> forces(kind, t, parametersFor<D>());
   sph::Derivatives<D> out;
   forces(s, out);
   return error<D>(s, kind, t, out);
@@ -217,7 +252,7 @@ void allCombinations(unsigned seed) {
     }
     results.check("max |code - O(N^2) reference| / sum|pair terms|, " +
                       std::string(sph::name(kind)) + ", D=" + std::to_string(D) +
-                      ", all 24 term combinations",
+                      ", all 27 term combinations",
                   worst, "<=", tolerance, "summation round-off bound (n u sum|x_k|, Higham 2002)");
   }
 }
@@ -267,7 +302,7 @@ void keptLists(unsigned seed) {
     double worst = 0.0, worstFar = 1e300;
     for (int combo = 0; combo < menuSize; ++combo) {
       const sph::TermSwitches t = switchesOf(combo);
-      sph::ForceEvaluation<D> forces(kind, t, parameters);
+      sph::ForceEvaluation<D> forces(kind, t, parametersFor<D>());
       sph::Derivatives<D> out;
       forces(set, out, sph::Vec<D>::Zero(), {skin, false});
       worst = std::max(worst, error<D>(set, kind, t, out));
@@ -281,7 +316,7 @@ void keptLists(unsigned seed) {
     EXPECT_LE(worst, tolerance) << what;
     EXPECT_GE(worstFar, 1e-3) << what;
     results.check("kept neighbour lists, moved within the skin: max error / sum|pair terms|, " +
-                      what + ", all 24 term combinations",
+                      what + ", all 27 term combinations",
                   worst, "<=", tolerance, "summation round-off bound, as the full build");
   }
 }
@@ -306,11 +341,21 @@ TEST(ForceEvaluation, KeptNeighbourListsMatchReference3D) {
 class ThreadCount : public ::testing::TestWithParam<int> {};
 TEST_P(ThreadCount, DoesNotChangeBits) {
   const auto set = randomSet<2>(13, GetParam());
-  const sph::TermSwitches all{true, true, true, sph::DensityDiffusion::fourtakas};
+  const sph::TermSwitches all{true, true, true, sph::DensityDiffusion::fourtakas, true};
+  const auto parameters = parametersFor<2>(GetParam());
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   sph::Derivatives<2> one;
   sph::ForceEvaluation<2>(KernelKind::quadratic, all, parameters)(set, one);
+  // The loop without the sums: the same rates, bit for bit.
+  sph::Derivatives<2> plain;
+  sph::ForceEvaluation<2>(KernelKind::quadratic, all, parameters)(set, plain, {}, {}, false);
+  EXPECT_TRUE(plain.sums.empty());
+  for (std::size_t i = 0; i < one.dvdt.size(); ++i) {
+    EXPECT_EQ(one.dvdt[i], plain.dvdt[i]) << "without the sums, particle " << i;
+    EXPECT_EQ(one.drhodt[i], plain.drhodt[i]) << "without the sums, particle " << i;
+    EXPECT_EQ(one.dhdt[i], plain.dhdt[i]) << "without the sums, particle " << i;
+  }
   for (int threads : {2, 3, 5}) {
     omp_set_num_threads(threads);
     sph::ForceEvaluation<2> force(KernelKind::quadratic, all, parameters);
@@ -323,6 +368,9 @@ TEST_P(ThreadCount, DoesNotChangeBits) {
         EXPECT_EQ(one.drhodt[i], many.drhodt[i]) << threads << " threads, particle " << i;
         EXPECT_EQ(one.dhdt[i], many.dhdt[i]) << threads << " threads, particle " << i;
       }
+      ASSERT_EQ(one.sums.size(), 5 * one.dvdt.size());
+      for (std::size_t k = 0; k < one.sums.size(); ++k)
+        EXPECT_EQ(one.sums[k], many.sums[k]) << threads << " threads, sum " << k;
     }
   }
   omp_set_num_threads(saved);

@@ -28,9 +28,16 @@ struct TermSwitches {
   bool morrisViscosity = false;      // eq. (9)
   bool variableH = false;            // eq. (13)
   DensityDiffusion densityDiffusion = DensityDiffusion::none;
+  // Particle shifting's pair sums (terms/ConcentrationGradient.hpp), in the evaluations that ask
+  // for them (ForceEvaluation::operator()).
+  bool concentrationGradient = false;
 };
-// The menu entry of a choice of optional terms (bit k: the k-th).
+// The menu entry of a choice of optional terms (bit k: the k-th); std::invalid_argument for a
+// choice off the menu.
 unsigned menuIndex(TermSwitches);
+// Whether the menu has a loop for the choice (the concentration gradient joins one set of the
+// optional terms only: terms/Menu.hpp).
+bool onMenu(TermSwitches);
 // The operations a pair of that entry's terms takes (quadratic kernel; terms::Flops).
 terms::Flops pairFlops(TermSwitches);
 
@@ -38,6 +45,10 @@ template <int D>
 struct Derivatives {
   LineVector<Vec<D>> dvdt;
   LineVector<double> drhodt, dhdt;
+  // The sums of its own that a term of the evaluated set has (terms/PairValues.hpp: sums<D>), by
+  // particle: sumsWidth a particle, in the term's order; none where no term has such sums.
+  LineVector<double> sums;
+  int sumsWidth = 0;
   void resize(std::size_t n) { dvdt.resize(n), drhodt.resize(n), dhdt.resize(n); }
 };
 
@@ -59,9 +70,17 @@ class ForceEvaluation {
   // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt;
   // `g`, a uniform body acceleration, is added to dv/dt as the rates are written (F/rho in eq.
   // 12; no pass of its own). Each pair is evaluated once and every sum runs in an order that the
-  // cell list fixes, so the result does not depend on the number of threads.
+  // cell list fixes, so the result does not depend on the number of threads. With `ownSums`
+  // false, the loop without the terms that only have sums of their own (out.sums: the
+  // concentration gradient): the rates are the same bits either way.
   void operator()(const InteractionSet<D>& set, Derivatives<D>& out,
-                  const Vec<D>& g = Vec<D>::Zero(), NeighbourLists lists = {});
+                  const Vec<D>& g = Vec<D>::Zero(), NeighbourLists lists = {}, bool ownSums = true);
+
+  // Marks, for each fluid entry i of the last evaluated set with marked[i], every fluid entry
+  // within the kernel's support of i (at h_ij), and the source of every halo entry within it:
+  // near[k] = 1 (near sized nFluid, not cleared). Through the evaluation's cell list: a query
+  // around the marked entries only.
+  void markWithinSupport(const InteractionSet<D>& set, const char* marked, char* near) const;
 
   // The entries below `count` of the last evaluated set (its fluid), in the cell list's order;
   // with `cells`, each one's cell (in the whole grid of frameGrid).
@@ -86,7 +105,7 @@ class ForceEvaluation {
   KernelKind kernel_;
   TermSwitches terms_;
   terms::TermParameters parameters_;
-  Loop loop_;
+  Loop loop_, ownSumsLoop_;
   std::shared_ptr<Workspace> work_;
 };
 

@@ -48,6 +48,11 @@ struct QuadraticKernel {
     if (q >= 2.0) return 0.0;
     return norm<D>() / ipow<D + 1>(h) * (0.375 * q - 0.75);
   }
+  // W's shape: W = N_D / h^D shape(q), for the pair loop (0 <= q <= 2; branch-free).
+  template <int D, class T>
+  static T shape(T q) {
+    return (0.1875 * q - 0.75) * q + 0.75;
+  }
   // (1/r) dW/dr for the pair loop, from r, 1/r and 1/h, which the loop computes once per pair
   // for all its terms. Valid for 0 < r < 2h only (the
   // loop masks the other pairs out) and branch-free so that the loop vectorises.
@@ -84,6 +89,13 @@ struct CubicSplineKernel {
     if (q >= 2.0) return 0.0;
     const double df = q < 1.0 ? -3.0 * q + 2.25 * q * q : -0.75 * (2.0 - q) * (2.0 - q);
     return norm<D>() / ipow<D + 1>(h) * df;
+  }
+  // W's shape (see QuadraticKernel::shape): both branches computed and one selected.
+  template <int D, class T>
+  static T shape(T q) {
+    const T s = 2.0 - q;
+    const T inner = 1.0 + q * q * (0.75 * q - 1.5), outer = 0.25 * (s * s * s);
+    return q < 1.0 ? inner : outer;
   }
   // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR); for q < 1, df/q = -3 + 2.25 q;
   // for q >= 1, df/q = -0.75 s^2 / q with 1/q = h/r, so (1/r) dW/dr = N/h^(D+1) (-0.75 s^2) / r.
@@ -124,6 +136,13 @@ struct WendlandC2Kernel {
     const double s = 1.0 - 0.5 * q;
     if constexpr (D == 1) return norm<D>() / (h * h) * (-3.0 * q * s * s);
     return norm<D>() / ipow<D + 1>(h) * (-5.0 * q * s * s * s);
+  }
+  // W's shape (see QuadraticKernel::shape).
+  template <int D, class T>
+  static T shape(T q) {
+    const T s = 1.0 - 0.5 * q;
+    if constexpr (D == 1) return s * s * s * (1.5 * q + 1.0);
+    return (s * s) * (s * s) * (2.0 * q + 1.0);
   }
   // (1/r) dW/dr for 0 < r < 2h (see QuadraticKernel::gradOverR): the factor q cancels against
   // 1/r = 1/(q h), so no division is left.

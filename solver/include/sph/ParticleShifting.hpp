@@ -33,22 +33,31 @@
 //
 // Both pair sums are taken over the interaction set (fluid, periodic images, mirror ghosts, wall
 // particles), which completes the support at walls and across periodic faces: a lattice against a
-// mirror wall has grad C = 0 as in the interior. Each particle's sums run over its neighbours in
-// the cell list's order, whatever the thread count.
+// mirror wall has grad C = 0 as in the interior. In a run they are a term of the pair loop
+// (terms/ConcentrationGradient.hpp), evaluated with the rates of the step's trial state, where the
+// shift is taken: each pair once, summed in an order the cell list fixes, whatever the thread
+// count. The particles near the surface are marked through that evaluation's cell list, around the
+// surface particles only. This class keeps a scalar gather of the same sums (each pair from both
+// sides, over a cell list of its own) as the tests' reference.
 //
-// Cost (2-core VM, loaded, one thread): the paper's dam break at dx 0.01 2.5-3.1 s, with Lind
-// shifting 7.1-7.6 s; at dx 0.005 to t = 0.6 s 9.5 s, with Fourtakas diffusion and Lind shifting
-// 30.4 s: about 400 ns a particle a step, four force evaluations' worth. The pass is scalar and
-// visits each pair twice (a gather); in the pair loop (each pair once, four lanes) its sums would
-// need room in the rate record beside d rho/dt, dh/dt and dv/dt.
+// Cost (perf record, dam break dx 0.01 with Fourtakas diffusion and Lind shifting to t = 0.1 s,
+// one thread, loaded 2-core VM): the trial evaluation with the sums 39 % of the time, the other,
+// without, 27 %; the marks near the surface 2 % and the per-particle rest 2 %. The dam break at
+// dx 0.005 to t = 0.3 s, 2 threads (--fixed-threads), CPU seconds of 5 alternated rounds, load
+// 8-11 on the 2 cores: with Fourtakas diffusion and Lind shifting 1.55 times the paper's scene
+// (medians 13.1 s against 8.2 s; rounds 1.49-1.82), above issue 31's 1.3. In the loop with the
+// sums the division of W_ij by W(dx) waits on the pair's square root, and accumulators spill.
+
 #include <memory>
 #include <string_view>
 #include <vector>
 
 #include "sph/CacheLines.hpp"
+#include "sph/ForceEvaluation.hpp"
 #include "sph/InteractionSet.hpp"
 #include "sph/Kernels.hpp"
 #include "sph/Vector.hpp"
+#include "sph/terms/ConcentrationGradient.hpp"
 
 namespace sph {
 
@@ -62,8 +71,9 @@ struct ShiftingParameters {
   // div r below which a particle is on the free surface; 0: the dimension's default.
   double surfaceThreshold = 0.0;
   bool freeSurface = true;  // the tangential-only treatment near the surface (false: tests)
-  static constexpr double anticlumpingR = 0.2;  // Lind et al. 2012 after Monaghan 2000
-  static constexpr int anticlumpingN = 4;
+  // Lind et al. 2012 after Monaghan 2000 (the pair loop's term: terms/ConcentrationGradient.hpp)
+  static constexpr double anticlumpingR = terms::ConcentrationGradient::anticlumpingR;
+  static constexpr int anticlumpingN = terms::ConcentrationGradient::anticlumpingN;
 };
 
 // A's default of each form: Skillen et al.'s 2 (DualSPHysics' default) and delta-plus's 4.
@@ -77,7 +87,14 @@ class ParticleShifting {
   ParticleShifting(KernelKind kernel, const ShiftingParameters& p, double dx);
   ~ParticleShifting();
 
-  // The shifts dr_i of the set's fluid entries i (shift.size() = set.nFluid) for a step dt.
+  // The shifts dr_i of the set's fluid entries i (shift.size() = set.nFluid) for a step dt,
+  // from the pair sums that `forces` has just evaluated on `set` into `sums` (with the
+  // concentration gradient: TermSwitches::concentrationGradient), the particles near the surface
+  // marked through its cell list.
+  void operator()(const InteractionSet<D>& set, double dt, const Derivatives<D>& sums,
+                  const ForceEvaluation<D>& forces, LineVector<Vec<D>>& shift);
+  // The same with the pair sums gathered here, each pair from both sides, over a cell list of
+  // its own: the scalar reference of the pair loop's sums (tests).
   void operator()(const InteractionSet<D>& set, double dt, LineVector<Vec<D>>& shift);
 
   // The last call's per-particle sums, for tests: grad C (with the anti-clumping factor), g
@@ -91,6 +108,8 @@ class ParticleShifting {
 
  private:
   struct Cells;
+  void start(const InteractionSet<D>& set, LineVector<Vec<D>>& shift);
+  void shiftsFrom(const InteractionSet<D>& set, double dt, LineVector<Vec<D>>& shift);
   KernelKind kernel_;
   ShiftingParameters p_;
   double dx_;

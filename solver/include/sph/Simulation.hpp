@@ -173,7 +173,9 @@ class Simulation {
     void add(const Vec<D>& r, double h, std::int64_t i);
   };
   Motion motionStart(std::int64_t n) const;
-  void rates(const Particles<D>& state, double t, Derivatives<D>& out, const Motion& motion);
+  // With `shiftingSums`, out.sums gets particle shifting's pair sums too (ForceEvaluation).
+  void rates(const Particles<D>& state, double t, Derivatives<D>& out, const Motion& motion,
+             bool shiftingSums = false);
 
   Scene scene_;
   Boundaries<D> bounds_;
@@ -181,7 +183,8 @@ class Simulation {
   Source source_;
   std::unique_ptr<Boundary<D>> boundary_;
   std::unique_ptr<ParticleShifting<D>> shifting_;
-  LineVector<Vec<D>> shift_;  // dr of the step's final stage, from its trial state
+  LineVector<Vec<D>> shift_;   // dr of the step's final stage, from its trial state
+  bool shiftingSums_ = false;  // shifting's pair sums in the pair loop (else its own gather)
   Check check_;
   Reflection reflection_;
   Particles<D> y_, yStar_;

@@ -8,6 +8,7 @@
 
 #include "sph/terms/ArtificialViscosity.hpp"
 #include "sph/terms/BodyForce.hpp"
+#include "sph/terms/ConcentrationGradient.hpp"
 #include "sph/terms/ContinuityEquation.hpp"
 #include "sph/terms/DensityDiffusionFourtakas.hpp"
 #include "sph/terms/DensityDiffusionMolteniColagrossi.hpp"
@@ -30,6 +31,17 @@ using OptionalTerms = TermList<ArtificialViscosity, MorrisViscosity, VariableSmo
 using DensityDiffusionForms =
     TermList<DensityDiffusionMolteniColagrossi, DensityDiffusionFourtakas>;
 inline constexpr unsigned optionalSubsets = 1u << OptionalTerms::size;
+inline constexpr unsigned ratesEntries = optionalSubsets * (1 + DensityDiffusionForms::size);
+// Particle shifting's pair sums (ConcentrationGradient) join one optional subset only, with each
+// diffusion form: every optional term on, the paper's model (Lobovsky & Kren: artificial
+// viscosity, Morris viscosity, variable h), which is the model of every scene and test that
+// shifts (the dam break's, the tanks at rest). Other sets take particle shifting's own gather
+// (ParticleShifting.hpp). An optional term would double the menu: with the sums for every subset
+// (48 entries) the 1-D menu file took 137 s of compile CPU against 61 s without them; with these
+// three entries the 1-, 2- and 3-D files take 81, 84 and 105 s against 61, 62 and 78 s (-O3, one
+// core each, loaded machine).
+inline constexpr unsigned shiftingSubset = optionalSubsets - 1;
+using ShiftingTerms = TermList<ConcentrationGradient>;
 
 namespace detail {
 // The optional terms whose bits are set in Mask, appended to Chosen.
@@ -63,18 +75,30 @@ template <class... C>
 struct SetOf<TermList<C...>> {
   using type = TermSet<C...>;
 };
+template <class List, class More>
+struct Append;
+template <class... C, class... M>
+struct Append<TermList<C...>, TermList<M...>> {
+  using type = TermList<C..., M...>;
+};
 template <unsigned Index>
 struct Entry {
-  using optional = typename Pick<Index % optionalSubsets, RequiredTerms, OptionalTerms>::type;
+  static constexpr bool sums = Index >= ratesEntries;
+  static constexpr unsigned rates =
+      sums ? shiftingSubset + optionalSubsets * (Index - ratesEntries) : Index;
+  using optional = typename Pick<rates % optionalSubsets, RequiredTerms, OptionalTerms>::type;
+  using withSums =
+      std::conditional_t<sums, typename Append<optional, ShiftingTerms>::type, optional>;
   using type = typename SetOf<
-      typename Choose<Index / optionalSubsets, optional, DensityDiffusionForms>::type>::type;
+      typename Choose<rates / optionalSubsets, withSums, DensityDiffusionForms>::type>::type;
 };
 }  // namespace detail
 
 // The term set of menu entry `Index` = optional subset + optionalSubsets x diffusion form: the
-// required terms, then the optional ones the subset switches on, then the slot's form.
+// required terms, then the optional ones the subset switches on, then the slot's form; from
+// ratesEntries on, ratesEntries + diffusion form: the shifting subset's with the pair sums.
 template <unsigned Index>
 using MenuEntry = typename detail::Entry<Index>::type;
-inline constexpr unsigned menuSize = optionalSubsets * (1 + DensityDiffusionForms::size);
+inline constexpr unsigned menuSize = ratesEntries + 1 + DensityDiffusionForms::size;
 
 }  // namespace sph::terms

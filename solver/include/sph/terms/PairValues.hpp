@@ -4,7 +4,9 @@
 //   reads    which of the pair's shared values it needs beyond r_ij, v_ij and the kernel,
 //   writes   which of the pair's sums it adds to,
 //   flops    its operations a pair, counted from its source (perf: the per-term cost table),
-//   pair(p, s)    its share of one pair: p the pair's values, s the sums it adds to,
+//   pair(p, s)    its share of one pair: p the pair's values, s the sums it adds to (a term
+//                 that needs the kernel or the dimension: pair<Kernel, D>(p, s)),
+//   sums<D>  where it has sums of its own (PairSums::ownI): how many a particle,
 // and optionally finish(f, x) for the per-particle step after all pairs, and a constructor
 // from TermParameters where it has parameters. The pair values are written over two value
 // types: S for particle i's fields and V for j's and the pair's, so that the same function
@@ -41,6 +43,8 @@ struct PairValues {
   V rx, ry, rz;  // r_ij (zero beyond D)
   V vx, vy, vz;  // v_ij
   V r2;          // |r_ij|^2
+  V r;           // |r_ij|
+  V hInv;        // 1 / h_ij
   V vr;          // v_ij . r_ij
   V hSum;        // h_i + h_j = 2 h_ij
   V hSum2;       // (h_i + h_j)^2
@@ -53,6 +57,9 @@ struct PairValues {
 // of (h_i + h_j)^2 = 4 h_ij^2. (The paper prints eta = 0.01 H^2.)
 inline constexpr double etaSquaredOfHSum2 = 0.0025;
 
+// The most sums of its own a term may have (Writes; 2 D + 1 in 3-D).
+inline constexpr int maxOwnSums = 7;
+
 // What one pair adds, before the driver sums it: to i's and to j's d rho/dt, to the sums of
 // eq. (13) (h/D times the sum is dh/dt), and eq. (12)'s pair force per unit of the two masses,
 // Q = bracket F r_ij - viscous v_ij: dv_i/dt gets -m_j Q and dv_j/dt gets +m_i Q. Each starts at
@@ -63,6 +70,9 @@ struct PairSums {
   V hI = -V{}, hJ = -V{};      // the sums of eq. (13)
   V bracket = -V{};            // (p_i/rho_i^2 + p_j/rho_j^2 + Pi_ij) of eq. (12)
   V viscous = -V{};            // the factor of v_ij (Morris et al. 1997, eq. 9)
+  // A term's sums of its own beside the rates (its sums<D> of them; one such term a set), which
+  // it sets: i's and j's shares.
+  V ownI[maxOwnSums], ownJ[maxOwnSums];
 };
 
 struct Reads {
@@ -89,6 +99,7 @@ struct TermParameters {
   double rho0 = 1000.0, bulkModulus = 1.0;
   int gammaInteger = 7;
   double g[3] = {0.0, 0.0, 0.0};
+  double spacing = 0.0;  // the initial particle spacing dx [m], of particle shifting's W(dx)
 };
 
 // A fluid particle's rates once all its pairs are summed, for the terms' finish steps: hSum is

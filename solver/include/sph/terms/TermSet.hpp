@@ -12,6 +12,17 @@
 
 namespace sph::terms {
 
+namespace detail {
+// A term's sums of its own a particle (its sums<D>), 0 for a term without.
+template <int D, class T>
+constexpr int ownSumsOf() {
+  if constexpr (requires { T::template sums<D>; })
+    return T::template sums<D>;
+  else
+    return 0;
+}
+}  // namespace detail
+
 template <class... Ts>
 class TermSet {
  public:
@@ -25,16 +36,31 @@ class TermSet {
   static constexpr Flops flops{14 + (reads.etaInverse ? 4 : 0) + (Ts::flops.shared + ... + 0),
                                (Ts::flops.sided + ... + 0)};
 
-  // i's and j's shares of one pair, in the order of D axes: {d rho/dt, eq. 13's sum, dv/dt}.
+  // The sums of its own that the set's term with such sums has (PairSums::ownI), a particle.
+  template <int D>
+  static constexpr int ownSums = (detail::ownSumsOf<D, Ts>() + ... + 0);
+  static_assert(((detail::ownSumsOf<1, Ts>() > 0 ? 1 : 0) + ... + 0) <= 1,
+                "at most one term of a set has sums of its own");
+
+  // i's and j's shares of one pair, in the order of D axes: {d rho/dt, eq. 13's sum, dv/dt}, and
+  // the own sums.
   template <int D, class V>
   struct Shares {
     V rho, h, v[3];
+    V own[ownSums<D> > 0 ? ownSums<D> : 1];
   };
-  template <int D, class S, class V>
+  template <int D, class Kernel, class S, class V>
   void pair(const PairValues<S, V>& p, Shares<D, V>& i, Shares<D, V>& j) const {
     PairSums<V> s;
-    std::apply([&](const auto&... t) { (t.pair(p, s), ...); }, terms_);
+    auto one = [&]<class T>(const T& t) {
+      if constexpr (requires { t.template pair<Kernel, D>(p, s); })
+        t.template pair<Kernel, D>(p, s);
+      else
+        t.pair(p, s);
+    };
+    std::apply([&](const auto&... t) { (one(t), ...); }, terms_);
     i.rho = s.rhoI, j.rho = s.rhoJ, i.h = s.hI, j.h = s.hJ;
+    for (int k = 0; k < ownSums<D>; ++k) i.own[k] = s.ownI[k], j.own[k] = s.ownJ[k];
     const V G = s.bracket * p.F;
     auto Q = [&](V r, V v) {
       if constexpr (writes.viscous)
