@@ -173,13 +173,13 @@ TEST(Restart, FailureCheckpointFailsTheSameWay) {
 
 // The small tank without gravity (RunOutputTest.cpp's long run: its hydrostatic start relaxes,
 // nothing fails) for 2.5 s, some 15,000 steps: 0.3-0.5 s of a quiet machine, several seconds of a
-// loaded one. `interval` > 0 sets output.checkpoint_interval.
-std::string tankScene(double interval) {
+// loaded one. `interval` > 0 sets output.checkpoint_interval; a snapshot every `snapshots` s.
+std::string tankScene(double interval, double snapshots = 0.5) {
   return editedScene(
       {{"end_time = 0.02", "end_time = 2.5"},
        {"gravity = [0.0, -9.81]", "gravity = [0.0, 0.0]"},
-       {"snapshot_interval = 0.01",
-        "snapshot_interval = 0.5\ncheckpoint_interval = " + std::to_string(interval)}});
+       {"snapshot_interval = 0.01", "snapshot_interval = " + std::to_string(snapshots) +
+                                        "\ncheckpoint_interval = " + std::to_string(interval)}});
 }
 
 // The uninterrupted run's wall time, from which a signal's delay is taken so that it lands part way
@@ -258,10 +258,7 @@ std::vector<fs::path> recordSegments(const std::string& part) {
 // files in all.) The restart from them continues the run bit for bit, and the finished run
 // removes them.
 TEST(Restart, CheckpointSegmentsHoldEachSnapshotOnce) {
-  const std::string scene = editedScene(
-      {{"end_time = 0.02", "end_time = 2.5"},
-       {"gravity = [0.0, -9.81]", "gravity = [0.0, 0.0]"},
-       {"snapshot_interval = 0.01", "snapshot_interval = 0.05\ncheckpoint_interval = 0.1"}});
+  const std::string scene = tankScene(0.1, 0.05);
   const fs::path dir = fs::path(scene).parent_path();
   const std::string whole = (dir / "whole").string(), part = (dir / "part").string();
   ASSERT_EQ(runSph("run '" + scene + "' --out '" + whole + "' --threads 1 --quiet").exitCode, 0);
@@ -303,10 +300,7 @@ TEST(Restart, CheckpointSegmentsHoldEachSnapshotOnce) {
 // bit. Checkpoints every 0.1 s and snapshots only at the ends, so that a checkpoint meets the full
 // disk before a snapshot's room check does.
 TEST(Restart, FullDiskKeepsTheLastCheckpointRestartable) {
-  const std::string scene = editedScene(
-      {{"end_time = 0.02", "end_time = 2.5"},
-       {"gravity = [0.0, -9.81]", "gravity = [0.0, 0.0]"},
-       {"snapshot_interval = 0.01", "snapshot_interval = 2.5\ncheckpoint_interval = 0.1"}});
+  const std::string scene = tankScene(0.1, 2.5);
   const fs::path dir = fs::path(scene).parent_path();
   const std::string whole = (dir / "whole").string(), copy = (dir / "copy").string();
   const std::string mount = (dir / "disk").string(), script = (dir / "full_disk.sh").string();
