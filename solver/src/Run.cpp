@@ -17,6 +17,7 @@
 
 #include "sph/Checkpoint.hpp"
 #include "sph/Diagnostics.hpp"
+#include "sph/DomainDecomposition.hpp"
 #include "sph/EnergyBudget.hpp"
 #include "sph/InitialParticles.hpp"
 #include "sph/Interrupt.hpp"
@@ -152,6 +153,66 @@ CheckpointState<D> resumeFrom(const std::string& path, const Scene& scene,
   return c;
 }
 
+// What ran: the build, the machine, the scene and its model (reports/SCHEMA.md).
+template <int D>
+void writeHeader(RunFile& file, const Scene& scene, const Simulation<D>& sim, int processes) {
+  const Provenance p = provenance();
+  file.attribute("sph_version", p.version), file.attribute("git_commit", p.commit);
+  file.attribute("compiler", p.compiler), file.attribute("cxx_flags", p.flags);
+  file.attribute("build_type", p.buildType), file.attribute("machine", p.machine);
+  file.attribute("date", p.date);
+  file.attribute("threads", std::int64_t(omp_get_max_threads()));  // of each process
+  file.attribute("processes", std::int64_t(processes));
+  file.attribute("scene_name", scene.name), file.attribute("scene_file", scene.file);
+  file.attribute("dimension", std::int64_t(D));
+  double g = 0;
+  for (double c : scene.bodyAcceleration) g += c * c;
+  file.attribute("gravity", std::sqrt(g));
+  file.attribute("rho0", scene.phases[0].rho0);
+  file.attribute("kernel", std::string(name(scene.kernel)));
+  file.attribute("integrator", std::string(name(scene.integrator)));
+  file.attribute("terms", join(sim.termNames()));
+  file.attribute("boundary_model", std::string(sim.boundary().name()));
+  file.attribute("status", std::string("running"));
+  file.text("/scene", scene.text);
+}
+
+// Over several processes (DomainDecomposition.hpp), the whole domain's particles in one
+// process's order and the set one process would hold, on process 0, for the record, the
+// snapshots and the energy budget: what they sum, they sum in one process's order.
+template <int D>
+struct WholeDomain {
+  const DomainDecomposition<D>* domain = nullptr;  // null: one process
+  Particles<D> particles;
+  std::vector<int> ids;
+  InteractionSet<D> set;
+  long at = -1;  // the step gathered
+
+  bool writes() const { return !domain || domain->rank() == 0; }
+  // The current state of `sim` (every process calls it; process 0 gets it).
+  void gather(const Simulation<D>& sim, bool withSet) {
+    if (at == sim.step()) return;
+    domain->gather(sim.particles(), sim.ids(), sim.keys(), particles, ids);
+    if (withSet && writes()) sim.wholeSet(particles, set);
+    at = sim.step();
+  }
+  // The energy budget's check of a state every process holds its part of: made on process 0,
+  // its verdict sent to all.
+  std::optional<Failure> check(const EnergyBudget<D>& energy, const Simulation<D>& sim,
+                               const Particles<D>& s, double t, long step) {
+    Particles<D> all;
+    std::vector<int> allIds;
+    domain->gather(s, sim.ids(), sim.keys(), all, allIds);
+    std::string verdict;
+    if (writes())
+      if (const auto f = energy.check(all, allIds, t, step)) verdict = encode(*f);
+    domain->broadcast(verdict, 0);
+    if (verdict.empty()) return std::nullopt;
+    return decodeFailure(verdict);
+  }
+  std::int64_t sum(std::int64_t x) const { return domain ? domain->sumAll(x) : x; }
+};
+
 template <int D>
 int run(const Scene& scene, const RunOptions& opt) {
   using clock = std::chrono::steady_clock;
@@ -171,36 +232,34 @@ int run(const Scene& scene, const RunOptions& opt) {
     std::cerr << scene.file << ": the fluid blocks hold no particles at dx = " << scene.dx << "\n";
     return exitBadInput;
   }
-  std::filesystem::create_directories(opt.outDir);
-  RunFile file((std::filesystem::path(opt.outDir) / (scene.name + ".h5")).string());
+  // The energy budget's start, of all particles (before they are spread over the processes).
+  const EnergyBudget<D> energy =
+      restarted ? EnergyBudget<D>(scene,
+                                  {resumed.progress.energyKinetic, resumed.progress.energyInternal,
+                                   resumed.progress.energyPotential},
+                                  resumed.progress.energyRoundOff)
+                : EnergyBudget<D>(scene, sim.particles());
+  WholeDomain<D> whole;
+  const auto domain = slabDecomposition<D>(scene);
+  if (domain) sim.distribute(domain), whole.domain = domain.get();
+  const bool writer = whole.writes();
+  bool withSet = false;  // the pressure probes read the interaction set
+  for (const auto& pr : scene.probes) withSet |= pr.type == "pressure";
+  // Only process 0 writes: the others hold a file object that is never opened.
   const std::string checkpoint = checkpointPath(opt.outDir, scene);
-  const Provenance p = provenance();
-  file.attribute("sph_version", p.version), file.attribute("git_commit", p.commit);
-  file.attribute("compiler", p.compiler), file.attribute("cxx_flags", p.flags);
-  file.attribute("build_type", p.buildType), file.attribute("machine", p.machine);
-  file.attribute("date", p.date);
-  file.attribute("threads", std::int64_t(omp_get_max_threads()));
-  file.attribute("scene_name", scene.name), file.attribute("scene_file", scene.file);
-  file.attribute("dimension", std::int64_t(D));
-  double g = 0;
-  for (double c : scene.bodyAcceleration) g += c * c;
-  file.attribute("gravity", std::sqrt(g));
-  file.attribute("rho0", scene.phases[0].rho0);
-  file.attribute("kernel", std::string(name(scene.kernel)));
-  file.attribute("integrator", std::string(name(scene.integrator)));
-  file.attribute("terms", join(sim.termNames()));
-  file.attribute("boundary_model", std::string(sim.boundary().name()));
-  file.attribute("status", std::string("running"));
-  file.text("/scene", scene.text);
-  if (restarted) {
-    file.attribute("restarted_from", opt.restart);
-    file.attribute("restart_time", sim.time());
-    file.attribute("restart_step", std::int64_t(sim.step()));
-  }
+  if (writer) std::filesystem::create_directories(opt.outDir);
+  std::optional<RunFile> output;
+  if (writer) output.emplace((std::filesystem::path(opt.outDir) / (scene.name + ".h5")).string());
+  RunFile* const out = writer ? &*output : nullptr;
+  if (out) writeHeader(*out, scene, sim, domain ? domain->ranks() : 1);
   // The record segments of this run's checkpoints continue the restart's chain where they go
   // beside it (the checkpoint is continued in place), else start a chain of their own.
   RecordChain chain = newRecordChain();
   if (restarted) {
+    RunFile& file = *out;  // a restart runs as one process (runScene)
+    file.attribute("restarted_from", opt.restart);
+    file.attribute("restart_time", sim.time());
+    file.attribute("restart_step", std::int64_t(sim.step()));
     RecordChain adopted = adoptCheckpointRecord(opt.restart, file);
     std::error_code ignored;
     if (!adopted.run.empty() && std::filesystem::equivalent(opt.restart, checkpoint, ignored))
@@ -208,18 +267,28 @@ int run(const Scene& scene, const RunOptions& opt) {
     else
       file.segmented({});
   }
-  for (const PackedBlock& b : packed) writePacking(file, scene, b);
+  if (out)
+    for (const PackedBlock& b : packed) writePacking(*out, scene, b);
 
   Series series(scene);
   long recorded = -1, snapshotted = -1;  // the steps last recorded and written
   auto record = [&] {
-    series.record(sim.time(), sim.lastDt(), sim.step(), int(sim.lastLimit()),
-                  diagnose<D>(scene, sim.particles(), sim.interactionSet()));
+    if (domain) whole.gather(sim, withSet);
+    if (writer)
+      series.record(sim.time(), sim.lastDt(), sim.step(), int(sim.lastLimit()),
+                    domain ? diagnose<D>(scene, whole.particles, whole.set)
+                           : diagnose<D>(scene, sim.particles(), sim.interactionSet()));
     recorded = sim.step();
   };
   auto snapshot = [&](bool lastGood) {
-    file.appendSeries(series.columns);
-    file.snapshot(sim.time(), sim.step(), fieldsOf(sim.particles(), sim.ids()), lastGood);
+    if (domain) whole.gather(sim, withSet);
+    if (writer) {
+      out->appendSeries(series.columns);
+      out->snapshot(
+          sim.time(), sim.step(),
+          domain ? fieldsOf(whole.particles, whole.ids) : fieldsOf(sim.particles(), sim.ids()),
+          lastGood);
+    }
     snapshotted = sim.step();
   };
   if (!restarted) {
@@ -233,15 +302,10 @@ int run(const Scene& scene, const RunOptions& opt) {
   }
   // Every series_every steps, as one of the simulation's checks of a new state: a state that fails
   // it is not taken, so the last good one is the simulation's own.
-  const EnergyBudget<D> energy =
-      restarted ? EnergyBudget<D>(scene,
-                                  {resumed.progress.energyKinetic, resumed.progress.energyInternal,
-                                   resumed.progress.energyPotential},
-                                  resumed.progress.energyRoundOff)
-                : EnergyBudget<D>(scene, sim.particles());
   if (energy.defined())
     sim.setCheck([&](const Particles<D>& s, double t, long step) -> std::optional<Failure> {
       if (step % scene.seriesEvery != 0) return std::nullopt;
+      if (domain) return whole.check(energy, sim, s, t, step);
       return energy.check(s, sim.ids(), t, step);
     });
   double nextSnapshot = scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
@@ -259,13 +323,13 @@ int run(const Scene& scene, const RunOptions& opt) {
     r.energyKinetic = energy.start().kinetic, r.energyInternal = energy.start().internal;
     r.energyPotential = energy.start().potential, r.energyRoundOff = energy.roundOff();
     try {
-      writeCheckpoint<D>(checkpoint, sim, r, file, series.columns, chain, failedStep);
+      writeCheckpoint<D>(checkpoint, sim, r, *out, series.columns, chain, failedStep);
     } catch (const OutputError& e) {
-      file.outputFailedBeside(e.what());  // the run stops (exit 4) with the file saying why
+      out->outputFailedBeside(e.what());  // the run stops (exit 4) with the file saying why
       throw;
     }
   };
-  const bool progress = opt.progress && isatty(STDERR_FILENO);
+  const bool progress = writer && opt.progress && isatty(STDERR_FILENO);
   auto lastPrint = clock::now(), lastCheckpoint = lastPrint;
   auto since = [&](clock::time_point a, clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
@@ -282,7 +346,13 @@ int run(const Scene& scene, const RunOptions& opt) {
       stopped = true;
       break;
     }
-    if ((interrupted = interruptSignal())) break;
+    interrupted = interruptSignal();
+    if (domain) {  // every process stops at the same step
+      double v = interrupted;
+      domain->maxAll(&v, 1);
+      interrupted = static_cast<int>(v);
+    }
+    if (interrupted) break;
     omp_set_num_threads(tuner.threads());
     const auto stepStart = clock::now();
     beforeStep = {sim.forceEvaluations(), sim.reusedNeighbourLists(), sim.wallReflections(),
@@ -319,70 +389,84 @@ int run(const Scene& scene, const RunOptions& opt) {
   const double onAll = tuner.shareOnAll();
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
   const bool early = failure || interrupted || stopped;
-  if (early) writeCheckpointNow(failure ? &beforeStep : nullptr);
+  // (a run over several processes writes no checkpoint: runScene)
+  const bool checkpointed = early && !domain;
+  if (checkpointed) writeCheckpointNow(failure ? &beforeStep : nullptr);
+  const std::int64_t particles = whole.sum(static_cast<std::int64_t>(sim.particles().size()));
+  const std::int64_t reflections = whole.sum(sim.wallReflections());
   if (failure) {
-    file.attribute("status", std::string("unstable"));
-    file.attribute("failure_cause", std::string(name(failure->cause)));
-    file.attribute("failure", failure->message);
+    if (out) {
+      out->attribute("status", std::string("unstable"));
+      out->attribute("failure_cause", std::string(name(failure->cause)));
+      out->attribute("failure", failure->message);
+    }
     snapshot(true);
   } else if (interrupted || stopped) {
     // The state of the last step is a good one (checked as every step's): the run file ends with
     // it, so a run stopped on purpose keeps all it computed.
-    file.attribute("status", std::string("interrupted"));
-    file.attribute("interrupted_by", std::string(stopped ? "stop_at" : signalName(interrupted)));
-    file.attribute("failure_cause", std::string());
-    file.attribute("failure", std::string());
+    if (out) {
+      out->attribute("status", std::string("interrupted"));
+      out->attribute("interrupted_by", std::string(stopped ? "stop_at" : signalName(interrupted)));
+      out->attribute("failure_cause", std::string());
+      out->attribute("failure", std::string());
+    }
     if (recorded != sim.step()) record();
     if (snapshotted != sim.step()) snapshot(false);
-    file.appendSeries(series.columns);
-  } else {
-    file.attribute("status", std::string("stable"));
-    file.attribute("failure_cause", std::string());
-    file.attribute("failure", std::string());
-    file.appendSeries(series.columns);
+    if (out) out->appendSeries(series.columns);
+  } else if (out) {
+    out->attribute("status", std::string("stable"));
+    out->attribute("failure_cause", std::string());
+    out->attribute("failure", std::string());
+    out->appendSeries(series.columns);
   }
+  if (!out)
+    return failure ? exitNumericalFailure : interrupted ? exitInterrupted + interrupted : exitDone;
+  RunFile& file = *out;
   const std::string m = "/metrics";
   file.attribute("wall_time_s", wall, m);
   file.attribute("steps", std::int64_t(sim.step()), m);
-  file.attribute("particles", std::int64_t(sim.particles().size()), m);
+  file.attribute("particles", particles, m);
   file.attribute("end_time", sim.time(), m);
   file.attribute("force_evaluations", std::int64_t(sim.forceEvaluations()), m);
   file.attribute("kept_neighbour_lists", std::int64_t(sim.reusedNeighbourLists()), m);
   file.attribute("steps_on_all_threads", onAll, m);  // the rest on one (ThreadTuner)
-  file.attribute("wall_reflections", std::int64_t(sim.wallReflections()), m);
-  file.attribute("particle_evaluations_per_s",
-                 double(sim.forceEvaluations()) * sim.particles().size() / wall, m);
+  file.attribute("wall_reflections", reflections, m);
+  file.attribute("particle_evaluations_per_s", double(sim.forceEvaluations()) * particles / wall,
+                 m);
   file.attribute("max_volume_variation", series.maxVariation[0], m);
   for (std::size_t k = 0; k < scene.phases.size(); ++k)
     file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
   file.finish();
   // A run that reached its end needs its checkpoint no more: the run file holds it all.
-  if (!early) removeCheckpoint(checkpoint);
+  if (!early && !domain) removeCheckpoint(checkpoint);
 
   if (!opt.quiet) {
-    std::printf("%s: %s at t = %.6g s after %ld steps, %zu particles, wall time %.2f s\n",
+    std::printf("%s: %s at t = %.6g s after %ld steps, %lld particles, wall time %.2f s\n",
                 scene.name.c_str(),
                 failure                  ? "UNSTABLE"
                 : interrupted || stopped ? "interrupted"
                                          : "done",
-                sim.time(), sim.step(), sim.particles().size(), wall);
+                sim.time(), sim.step(), static_cast<long long>(particles), wall);
     std::printf("  max volume variation %.4f %%", 100 * series.maxVariation[0]);
     for (std::size_t k = 0; k < scene.phases.size(); ++k)
       std::printf("   %s %.4f %%", scene.phases[k].name.c_str(), 100 * series.maxVariation[k + 1]);
-    std::printf("\n  wall reflections %ld\n", sim.wallReflections());
+    std::printf("\n  wall reflections %lld\n", static_cast<long long>(reflections));
     std::printf("  force evaluations %ld, %.0f %% with the neighbour lists kept\n",
                 sim.forceEvaluations(),
                 100.0 * sim.reusedNeighbourLists() / std::max(1L, sim.forceEvaluations()));
+    if (domain) std::printf("  %d processes (MPI)\n", domain->ranks());
     if (maxThreads > 1)
       std::printf("  steps on %d threads %.0f %%, on one %.0f %%%s\n", maxThreads, 100 * onAll,
                   100 * (1 - onAll), opt.fixedThreads ? " (--fixed-threads)" : "");
     std::printf("  run file %s\n", file.path().c_str());
-    if (early) std::printf("  checkpoint %s\n", checkpoint.c_str());
+    if (checkpointed) std::printf("  checkpoint %s\n", checkpoint.c_str());
   }
-  const std::string resume = "; sph run --restart " + checkpoint + " continues it";
+  const std::string resume =
+      checkpointed ? "; sph run --restart " + checkpoint + " continues it" : std::string();
   if (failure) {
     std::cerr << scene.file << ": numerical failure (" << name(failure->cause)
-              << "): " << failure->message << "; the checkpoint " << checkpoint
+              << "): " << failure->message << "; "
+              << (checkpointed ? "the checkpoint " + checkpoint : "the run file " + file.path())
               << " holds the last good state\n";
     return exitNumericalFailure;
   }
@@ -406,6 +490,18 @@ int run(const Scene& scene, const RunOptions& opt) {
 
 int runScene(const Scene& scene, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
+  // What a run over several processes does not do yet (solver/src/mpi/DESIGN-MPI.md).
+  if (const int n = launchedProcesses(); n > 1) {
+    auto refuse = [&](const std::string& what) {
+      throw std::invalid_argument(scene.file + ": " + what + " runs as one process, not as the " +
+                                  std::to_string(n) + " processes it was launched as (mpirun -n " +
+                                  std::to_string(n) + ")");
+    };
+    if (!options.restart.empty()) refuse("a restart (--restart)");
+    if (scene.checkpointInterval > 0) refuse("a scene with output.checkpoint_interval");
+    if (options.checkpointMinutes > 0) refuse("a run with --checkpoint-minutes");
+    if (scene.shifting.form != ShiftingForm::none) refuse("a scene with particle shifting");
+  }
   RunLimits limits = options.limits;
   limits.outDir = options.outDir;
   RunEstimate estimate = checkMemory(scene, limits);

@@ -38,6 +38,24 @@ std::string_view name(FailureCause c) {
                          std::to_string(static_cast<int>(c)));
 }
 
+std::string encode(const Failure& f) {
+  std::ostringstream o;
+  o.precision(17);
+  o << static_cast<int>(f.cause) << ' ' << f.step << ' ' << f.time << ' ' << f.particle << ' '
+    << f.message;
+  return o.str();
+}
+
+Failure decodeFailure(const std::string& text) {
+  std::istringstream in(text);
+  int cause = 0;
+  Failure f;
+  in >> cause >> f.step >> f.time >> f.particle;
+  std::getline(in >> std::ws, f.message);
+  f.cause = static_cast<FailureCause>(cause);
+  return f;
+}
+
 namespace {
 template <int D>
 Boundaries<D> boundariesOf(const Scene& s) {
@@ -217,12 +235,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
     fluid = &local_;
   }
   // Ghosts within the support plus the skin: those the kept lists may need.
-  boundary_->build(*fluid, scene_.phases, 2.0 * hMax + skin_,
-                   reuse ? HaloMembers::same : HaloMembers::rescan, set_);
-  // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall
-  // particles)
-  if (scene_.hydrostaticGhosts && scene_.terms.densityDiffusion == DensityDiffusion::fourtakas)
-    ghostDensitiesFromPressure(scene_.phases[0], set_);
+  buildSet(*fluid, 2.0 * hMax + skin_, reuse ? HaloMembers::same : HaloMembers::rescan, set_);
   if (domain_) {
     if (!reuse) frameGrid(hMax);
     forces_(set_, localRates_, g, {skin_, reuse}, false);
@@ -238,6 +251,26 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   if (source_) source_(t, state, out);
   ++evaluations_;
   if (reuse) ++reusedLists_;
+}
+
+template <int D>
+void Simulation<D>::buildSet(const Particles<D>& fluid, double reach, HaloMembers members,
+                             InteractionSet<D>& set) const {
+  boundary_->build(fluid, scene_.phases, reach, members, set);
+  // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall
+  // particles)
+  if (scene_.hydrostaticGhosts && scene_.terms.densityDiffusion == DensityDiffusion::fourtakas)
+    ghostDensitiesFromPressure(scene_.phases[0], set);
+}
+
+template <int D>
+void Simulation<D>::wholeSet(const Particles<D>& all, InteractionSet<D>& set) const {
+  // Ghosts of every particle within the support of a wall: the kept set's members may be more
+  // (within the support plus the skin when chosen), but those lie beyond the support of any
+  // point inside the domain, where the kernel is 0.
+  double hMax = 0;
+  for (double h : all.h) hMax = std::max(hMax, h);
+  buildSet(all, 2.0 * hMax + skin_, HaloMembers::rescan, set);
 }
 
 template <int D>
@@ -316,22 +349,9 @@ void Simulation<D>::agree(std::optional<Failure>& failure) const {
   domain_->minAll(&v, 1);
   if (v == huge) return failure.reset();
   const int from = static_cast<int>(std::fmod(v, domain_->ranks()));
-  std::string text;
-  if (domain_->rank() == from) {
-    std::ostringstream o;
-    o.precision(17);
-    o << static_cast<int>(failure->cause) << ' ' << failure->step << ' ' << failure->time << ' '
-      << failure->particle << ' ' << failure->message;
-    text = o.str();
-  }
+  std::string text = domain_->rank() == from ? encode(*failure) : std::string();
   domain_->broadcast(text, from);
-  std::istringstream in(text);
-  int cause;
-  Failure f;
-  in >> cause >> f.step >> f.time >> f.particle;
-  std::getline(in >> std::ws, f.message);
-  f.cause = static_cast<FailureCause>(cause);
-  failure = f;
+  failure = decodeFailure(text);
 }
 
 template <int D>
@@ -521,7 +541,6 @@ std::optional<Failure> Simulation<D>::failureFrom(const Particles<D>& s, std::in
         << " m inside " << c.solid << " (crossed its wall)";
       return Failure{FailureCause::wall_penetration, step, t, id_[c.particle], m.str()};
     }
-  if (check_) return check_(s, t, step);
   return std::nullopt;
 }
 
@@ -666,6 +685,7 @@ struct Simulation<D>::Stepper {
       failure = sim.failureFrom(ys, first, t, step);
     }
     if (sim.domain_) sim.agree(failure);
+    if (!failure && sim.check_) failure = sim.check_(ys, t, step);
     return !failure;
   }
 };

@@ -232,17 +232,10 @@ int main(int argc, char** argv) {
       return reportError(e);
     }
   }
-  // Launched as several processes (mpirun -n N): each would run the whole scene into the same
-  // run file. The decomposition is there (sph/DomainDecomposition.hpp) but the run's output is
-  // not gathered yet: refused before anything is written.
-  if (const int n = sph::launchedProcesses(); n > 1) {
-    if (sph::launchedRank() == 0)
-      std::cerr << "error: sph run as " << n << " processes (mpirun -n " << n
-                << "): a run's output over several processes is not supported yet; run it as one "
-                   "process (its threads: --threads)\n";
-    return sph::exitBadInput;
-  }
   try {
+    // Launched as several processes (mpirun -n N): each runs its slab of the domain, process 0
+    // writes the run file (sph/DomainDecomposition.hpp).
+    sph::Processes processes;
     sph::catchInterrupts();
     return sph::runScene(scene, options);
   } catch (const std::exception& e) {

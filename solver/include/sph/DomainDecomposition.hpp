@@ -71,4 +71,17 @@ std::shared_ptr<DomainDecomposition<D>> slabDecomposition(const Scene& scene);
 int launchedProcesses();
 int launchedRank();
 
+// MPI for a program a launcher started among others (launchedProcesses() > 1): started here,
+// finished when this goes. Throws std::runtime_error where the build has no MPI.
+class Processes {
+ public:
+  Processes();
+  ~Processes();
+  Processes(const Processes&) = delete;
+  Processes& operator=(const Processes&) = delete;
+
+ private:
+  bool started_ = false;
+};
+
 }  // namespace sph

@@ -33,6 +33,9 @@ struct Failure {
   int particle;
   std::string message;  // names step, time, particle and quantity
 };
+// A failure as text and back, to send it from one process to the others.
+std::string encode(const Failure&);
+Failure decodeFailure(const std::string&);
 
 enum class TimeStepLimit { acoustic = 0, viscous = 1, acceleration = 2 };
 
@@ -50,7 +53,9 @@ class Simulation {
   void setBoundary(std::unique_ptr<Boundary<D>> b) { boundary_ = std::move(b); }
   const Boundary<D>& boundary() const { return *boundary_; }
   // A further check of every new state (e.g. wall penetration against a curved wall), run after
-  // the built-in ones; a failure stops the step as those do.
+  // the built-in ones; a failure stops the step as those do. Over several processes every
+  // process calls it at the same steps, with its own particles, after the built-in checks have
+  // passed on all of them; it must then give the same answer on every process.
   using Check = std::function<std::optional<Failure>(const Particles<D>&, double t, long step)>;
   void setCheck(Check c) { check_ = std::move(c); }
   // A further correction of every new state before the checks (e.g. putting back a particle that
@@ -78,6 +83,10 @@ class Simulation {
   const DomainDecomposition<D>* decomposition() const { return domain_.get(); }
   // Each particle's place in a single process's storage (DomainDecomposition.hpp).
   const std::vector<std::int64_t>& keys() const { return key_; }
+  // The interaction set one process would hold at the current state, built from `all`, the
+  // whole domain's particles in key order (DomainDecomposition::gather): its entries within the
+  // support of any point are those of one process's set, in the same order.
+  void wholeSet(const Particles<D>& all, InteractionSet<D>& set) const;
 
   // Evaluates the rates of the current state (and the halo the probes read), if not done yet.
   void prepare();
@@ -156,6 +165,10 @@ class Simulation {
   // in key order (local_), and where each owned and halo particle is in it (placed anew when
   // the halo's members are chosen anew).
   void mergeHalo(const Particles<D>& state, bool rescan);
+  // The set from `fluid`: the boundary's entries, and the ghosts' densities where they take the
+  // hydrostatic pressure.
+  void buildSet(const Particles<D>& fluid, double reach, HaloMembers members,
+                InteractionSet<D>& set) const;
   // The whole domain's cell grid, from every process's part of the set (CellList::Frame).
   void frameGrid(double hMax);
   // The same failure (the first by key) on every process, or none.

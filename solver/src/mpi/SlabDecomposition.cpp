@@ -313,4 +313,18 @@ template std::shared_ptr<DomainDecomposition<1>> slabDecomposition<1>(const Scen
 template std::shared_ptr<DomainDecomposition<2>> slabDecomposition<2>(const Scene&);
 template std::shared_ptr<DomainDecomposition<3>> slabDecomposition<3>(const Scene&);
 
+Processes::Processes() {
+  int started = 0;
+  MPI_Initialized(&started);
+  if (launchedProcesses() > 1 && !started) {
+    MPI_Init(nullptr, nullptr);
+    started_ = true;
+  }
+}
+Processes::~Processes() {
+  int finished = 0;
+  MPI_Finalized(&finished);
+  if (started_ && !finished) MPI_Finalize();
+}
+
 }  // namespace sph
