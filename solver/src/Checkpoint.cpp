@@ -296,10 +296,13 @@ std::string checkpointPath(const std::string& outDir, const Scene& scene) {
   return (std::filesystem::path(outDir) / (scene.name + ".checkpoint.h5")).string();
 }
 
+namespace {
+
 template <int D>
-void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const RunProgress& progress,
-                     RunFile& runFile, std::vector<SeriesColumn>& series, RecordChain& chain,
-                     const StepCounters* failedStep) {
+void writeState(const std::string& path, const Scene& scene, const Particles<D>& y,
+                typename Simulation<D>::Resumable state, const Derivatives<D>& f,
+                const RunProgress& progress, RunFile& runFile, std::vector<SeriesColumn>& series,
+                RecordChain& chain, const StepCounters* failedStep) {
   namespace fs = std::filesystem;
   runFile.appendSeries(series);
   // The record's new segment, in place before the checkpoint that lists it.
@@ -312,15 +315,11 @@ void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const Ru
   std::vector<std::uint64_t> tokens = chain.tokens;
   tokens.push_back(token);
   const std::string writing = path + ".partial";
-  const Scene& scene = sim.scene();
-  const Particles<D>& y = sim.particles();
-  auto state = sim.resumable();
   if (failedStep) {
     state.evaluations = failedStep->evaluations, state.reusedLists = failedStep->reusedLists;
     state.reflections = failedStep->reflections;
     state.reflectionDepth = failedStep->reflectionDepth;
   }
-  const Derivatives<D>& f = sim.currentRates();
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const hid_t file = H5Fcreate(writing.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file < 0) hdf5::fail(writing, "creating the checkpoint");
@@ -412,6 +411,8 @@ void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const Ru
     fs::remove(segments / segmentName(k), e);
 }
 
+}  // namespace
+
 Scene checkpointScene(const std::string& path) {
   const Reader r(path);
   const std::string text = r.textDataset("/scene");
@@ -421,6 +422,23 @@ Scene checkpointScene(const std::string& path) {
   } catch (const SceneError& e) {
     r.fail(std::string("its scene does not read: ") + e.what());
   }
+}
+
+template <int D>
+void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const RunProgress& progress,
+                     RunFile& runFile, std::vector<SeriesColumn>& series, RecordChain& chain,
+                     const StepCounters* failedStep) {
+  writeState<D>(path, sim.scene(), sim.particles(), sim.resumable(), sim.currentRates(), progress,
+                runFile, series, chain, failedStep);
+}
+
+template <int D>
+void writeCheckpoint(const std::string& path, const Scene& scene,
+                     const typename Simulation<D>::Whole& whole, const RunProgress& progress,
+                     RunFile& runFile, std::vector<SeriesColumn>& series, RecordChain& chain,
+                     const StepCounters* failedStep) {
+  writeState<D>(path, scene, whole.particles, whole.state, whole.rates, progress, runFile, series,
+                chain, failedStep);
 }
 
 template <int D>
@@ -550,12 +568,21 @@ RecordChain adoptCheckpointRecord(const std::string& path, RunFile& runFile) {
 template void writeCheckpoint<1>(const std::string&, const Simulation<1>&, const RunProgress&,
                                  RunFile&, std::vector<SeriesColumn>&, RecordChain&,
                                  const StepCounters*);
+template void writeCheckpoint<1>(const std::string&, const Scene&,
+                                 const typename Simulation<1>::Whole&, const RunProgress&, RunFile&,
+                                 std::vector<SeriesColumn>&, RecordChain&, const StepCounters*);
 template void writeCheckpoint<2>(const std::string&, const Simulation<2>&, const RunProgress&,
                                  RunFile&, std::vector<SeriesColumn>&, RecordChain&,
                                  const StepCounters*);
+template void writeCheckpoint<2>(const std::string&, const Scene&,
+                                 const typename Simulation<2>::Whole&, const RunProgress&, RunFile&,
+                                 std::vector<SeriesColumn>&, RecordChain&, const StepCounters*);
 template void writeCheckpoint<3>(const std::string&, const Simulation<3>&, const RunProgress&,
                                  RunFile&, std::vector<SeriesColumn>&, RecordChain&,
                                  const StepCounters*);
+template void writeCheckpoint<3>(const std::string&, const Scene&,
+                                 const typename Simulation<3>::Whole&, const RunProgress&, RunFile&,
+                                 std::vector<SeriesColumn>&, RecordChain&, const StepCounters*);
 template CheckpointState<1> readCheckpoint<1>(const std::string&, const Scene&);
 template CheckpointState<2> readCheckpoint<2>(const std::string&, const Scene&);
 template CheckpointState<3> readCheckpoint<3>(const std::string&, const Scene&);

@@ -127,12 +127,15 @@ void writePacking(RunFile& file, const Scene& scene, const PackedBlock& b) {
 // bit: else the build or the lists differ from the run's.
 template <int D>
 CheckpointState<D> resumeFrom(const std::string& path, const Scene& scene,
-                              std::optional<Simulation<D>>& sim) {
+                              std::optional<Simulation<D>>& sim,
+                              std::shared_ptr<DomainDecomposition<D>> domain) {
   CheckpointState<D> c = readCheckpoint<D>(path, scene);
   checkCheckpointRecord(path);
   sim.emplace(scene, c.particles);
   sim->particles().p = c.particles.p;
   sim->keepCellOrder(cellOrderSteps);
+  // Its particles are stored in one process's order: their keys (any process count wrote it).
+  if (domain) sim->distribute(domain);
   bool same = false;
   try {
     same = sim->resume(c.simulation, c.rates, !c.afterFailure);
@@ -221,14 +224,15 @@ int run(const Scene& scene, const RunOptions& opt) {
   std::vector<PackedBlock> packed;
   std::optional<Simulation<D>> storage;
   CheckpointState<D> resumed;
+  const auto domain = slabDecomposition<D>(scene);  // null: one process
   if (restarted) {
-    resumed = resumeFrom<D>(opt.restart, scene, storage);
+    resumed = resumeFrom<D>(opt.restart, scene, storage, domain);
   } else {
     storage.emplace(scene, latticeParticles<D>(scene, &packed));
     storage->keepCellOrder(cellOrderSteps);
   }
   Simulation<D>& sim = *storage;
-  if (sim.particles().size() == 0) {
+  if (!restarted && sim.particles().size() == 0) {
     std::cerr << scene.file << ": the fluid blocks hold no particles at dx = " << scene.dx << "\n";
     return exitBadInput;
   }
@@ -240,12 +244,12 @@ int run(const Scene& scene, const RunOptions& opt) {
                                   resumed.progress.energyRoundOff)
                 : EnergyBudget<D>(scene, sim.particles());
   WholeDomain<D> whole;
-  const auto domain = slabDecomposition<D>(scene);
-  if (domain) sim.distribute(domain), whole.domain = domain.get();
+  whole.domain = domain.get();
+  if (domain && !restarted) sim.distribute(domain);
   const bool writer = whole.writes();
   bool withSet = false;  // the pressure probes read the interaction set
   for (const auto& pr : scene.probes) withSet |= pr.type == "pressure";
-  // Only process 0 writes: the others hold a file object that is never opened.
+  // Only process 0 writes.
   const std::string checkpoint = checkpointPath(opt.outDir, scene);
   if (writer) std::filesystem::create_directories(opt.outDir);
   std::optional<RunFile> output;
@@ -255,8 +259,8 @@ int run(const Scene& scene, const RunOptions& opt) {
   // The record segments of this run's checkpoints continue the restart's chain where they go
   // beside it (the checkpoint is continued in place), else start a chain of their own.
   RecordChain chain = newRecordChain();
-  if (restarted) {
-    RunFile& file = *out;  // a restart runs as one process (runScene)
+  if (restarted && out) {
+    RunFile& file = *out;
     file.attribute("restarted_from", opt.restart);
     file.attribute("restart_time", sim.time());
     file.attribute("restart_step", std::int64_t(sim.step()));
@@ -322,6 +326,25 @@ int run(const Scene& scene, const RunOptions& opt) {
     r.volume0 = series.volume0, r.total0 = series.total0, r.maxVariation = series.maxVariation;
     r.energyKinetic = energy.start().kinetic, r.energyInternal = energy.start().internal;
     r.energyPotential = energy.start().potential, r.energyRoundOff = energy.roundOff();
+    if (domain) {  // the one-process checkpoint, from the gathered state
+      StepCounters failed;
+      if (failedStep) {
+        failed = *failedStep;
+        failed.reflections = whole.sum(failed.reflections);
+        domain->maxAll(&failed.reflectionDepth, 1);
+      }
+      typename Simulation<D>::Whole state;
+      sim.gatherWhole(state);
+      if (!out) return;
+      try {
+        writeCheckpoint<D>(checkpoint, scene, state, r, *out, series.columns, chain,
+                           failedStep ? &failed : nullptr);
+      } catch (const OutputError& e) {
+        out->outputFailedBeside(e.what());
+        throw;
+      }
+      return;
+    }
     try {
       writeCheckpoint<D>(checkpoint, sim, r, *out, series.columns, chain, failedStep);
     } catch (const OutputError& e) {
@@ -368,8 +391,13 @@ int run(const Scene& scene, const RunOptions& opt) {
       snapshot(false);
       nextSnapshot += scene.snapshotInterval > 0 ? scene.snapshotInterval : scene.endTime;
     }
-    const bool onTime =
+    bool onTime =
         opt.checkpointMinutes > 0 && since(lastCheckpoint, stepEnd) >= 60.0 * opt.checkpointMinutes;
+    if (domain && opt.checkpointMinutes > 0) {  // the first process past it decides for all
+      double v = onTime ? 1.0 : 0.0;
+      domain->maxAll(&v, 1);
+      onTime = v > 0;
+    }
     if ((sim.time() >= nextCheckpoint * (1 - 1e-12) || onTime) &&
         sim.time() < scene.endTime * (1 - 1e-12)) {
       while (nextCheckpoint <= sim.time() * (1 + 1e-12)) nextCheckpoint += scene.checkpointInterval;
@@ -389,8 +417,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   const double onAll = tuner.shareOnAll();
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
   const bool early = failure || interrupted || stopped;
-  // (a run over several processes writes no checkpoint: runScene)
-  const bool checkpointed = early && !domain;
+  const bool checkpointed = early;
   if (checkpointed) writeCheckpointNow(failure ? &beforeStep : nullptr);
   const std::int64_t particles = whole.sum(static_cast<std::int64_t>(sim.particles().size()));
   const std::int64_t reflections = whole.sum(sim.wallReflections());
@@ -438,7 +465,7 @@ int run(const Scene& scene, const RunOptions& opt) {
     file.attribute("max_volume_variation_" + scene.phases[k].name, series.maxVariation[k + 1], m);
   file.finish();
   // A run that reached its end needs its checkpoint no more: the run file holds it all.
-  if (!early && !domain) removeCheckpoint(checkpoint);
+  if (!early) removeCheckpoint(checkpoint);
 
   if (!opt.quiet) {
     std::printf("%s: %s at t = %.6g s after %ld steps, %lld particles, wall time %.2f s\n",
@@ -497,9 +524,6 @@ int runScene(const Scene& scene, const RunOptions& options) {
                                   std::to_string(n) + " processes it was launched as (mpirun -n " +
                                   std::to_string(n) + ")");
     };
-    if (!options.restart.empty()) refuse("a restart (--restart)");
-    if (scene.checkpointInterval > 0) refuse("a scene with output.checkpoint_interval");
-    if (options.checkpointMinutes > 0) refuse("a run with --checkpoint-minutes");
     if (scene.shifting.form != ShiftingForm::none) refuse("a scene with particle shifting");
   }
   RunLimits limits = options.limits;

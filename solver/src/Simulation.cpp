@@ -778,7 +778,82 @@ typename Simulation<D>::Resumable Simulation<D>::resumable() const {
 }
 
 template <int D>
-bool Simulation<D>::resume(const Resumable& r, const Derivatives<D>& rates, bool verify) {
+void Simulation<D>::gatherWhole(Whole& w) const {
+  w.state = resumable();
+  if (!domain_) {
+    w.particles = y_, w.rates = f_;
+    return;
+  }
+  domain_->gather(y_, id_, key_, w.particles, w.state.ids);
+  // Rates and listed state as rows: dv/dt, drho/dt, dh/dt, then the listed r and h if listed.
+  const std::size_t n = y_.size();
+  const bool listed = listedAt_.size() == n && n > 0;
+  double anyListed = listed ? 1.0 : 0.0;
+  domain_->maxAll(&anyListed, 1);
+  const int width = D + 2 + (anyListed > 0 ? D + 1 : 0);
+  std::vector<double> rows;
+  rows.reserve(n * width);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < D; ++a) rows.push_back(f_.dvdt[i][a]);
+    rows.push_back(f_.drhodt[i]), rows.push_back(f_.dhdt[i]);
+    if (anyListed > 0) {
+      for (int a = 0; a < D; ++a) rows.push_back(listedAt_[i][a]);
+      rows.push_back(listedH_[i]);
+    }
+  }
+  std::vector<double> all;
+  domain_->gather(rows, width, key_, all);
+  double extremes[1] = {reflectionDepth_};
+  domain_->maxAll(extremes, 1);
+  w.state.reflectionDepth = extremes[0];
+  w.state.reflections = domain_->sumAll(reflections_);
+  if (domain_->rank() != 0) {
+    w.state.listedAt.clear(), w.state.listedH.clear();
+    return;
+  }
+  const std::size_t total = all.size() / width;
+  w.rates.resize(total);
+  w.state.listedAt.resize(anyListed > 0 ? total : 0),
+      w.state.listedH.resize(w.state.listedAt.size());
+  for (std::size_t k = 0; k < total; ++k) {
+    const double* row = all.data() + k * width;
+    for (int a = 0; a < D; ++a) w.rates.dvdt[k][a] = row[a];
+    w.rates.drhodt[k] = row[D], w.rates.dhdt[k] = row[D + 1];
+    if (anyListed > 0) {
+      for (int a = 0; a < D; ++a) w.state.listedAt[k][a] = row[D + 2 + a];
+      w.state.listedH[k] = row[2 * D + 2];
+    }
+  }
+}
+
+template <int D>
+bool Simulation<D>::resume(const Resumable& whole, const Derivatives<D>& wholeRates, bool verify) {
+  // Over several processes, this process's part: its particles' entries by key.
+  Resumable own;
+  Derivatives<D> ownRates;
+  if (domain_) {
+    const std::size_t total = whole.ids.size();
+    for (const std::int64_t k : key_)
+      if (k < 0 || static_cast<std::size_t>(k) >= total || wholeRates.drhodt.size() != total)
+        throw std::invalid_argument("the particle ids or rates are not of the " +
+                                    std::to_string(total) + " particles of the whole domain");
+    own = whole;
+    const std::size_t n = y_.size();
+    own.ids.resize(n), ownRates.resize(n);
+    const bool listed = whole.listedAt.size() == total;
+    own.listedAt.resize(listed ? n : 0), own.listedH.resize(listed ? n : 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = static_cast<std::size_t>(key_[i]);
+      own.ids[i] = whole.ids[k];
+      ownRates.dvdt[i] = wholeRates.dvdt[k], ownRates.drhodt[i] = wholeRates.drhodt[k];
+      ownRates.dhdt[i] = wholeRates.dhdt[k];
+      if (listed) own.listedAt[i] = whole.listedAt[k], own.listedH[i] = whole.listedH[k];
+    }
+    // (the count is the whole domain's: process 0 carries it, the others none, as summed)
+    if (domain_->rank() != 0) own.reflections = 0;
+  }
+  const Resumable& r = domain_ ? own : whole;
+  const Derivatives<D>& rates = domain_ ? ownRates : wholeRates;
   const std::size_t n = y_.size();
   if (r.ids.size() != n || (!r.listedAt.empty() && r.listedAt.size() != n) ||
       r.listedH.size() != r.listedAt.size() || rates.drhodt.size() != n)
@@ -806,6 +881,11 @@ bool Simulation<D>::resume(const Resumable& r, const Derivatives<D>& rates, bool
            equal(f_.dhdt, rates.dhdt) && (!skinned || skin_ == r.skin);
   } else {
     f_ = rates;
+  }
+  if (domain_) {  // the same on every process
+    double differs = same ? 0.0 : 1.0;
+    domain_->maxAll(&differs, 1);
+    same = differs == 0.0;
   }
   ratesValid_ = true;
   evaluations_ = r.evaluations, reusedLists_ = r.reusedLists;  // the run's, not these

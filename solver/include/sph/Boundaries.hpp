@@ -15,8 +15,8 @@ template <int D>
 struct Boundaries {
   Vec<D> lower = Vec<D>::Zero();
   Vec<D> upper = Vec<D>::Ones();
-  std::array<std::array<FaceKind, 2>, D> face{};          // [axis][0 lower, 1 upper]
-  std::array<std::array<Vec<D>, 2>, D> wallVelocity{};    // for no-slip walls (Couette)
+  std::array<std::array<FaceKind, 2>, D> face{};        // [axis][0 lower, 1 upper]
+  std::array<std::array<Vec<D>, 2>, D> wallVelocity{};  // for no-slip walls (Couette)
 
   Boundaries() {
     for (auto& a : face) a = {FaceKind::open, FaceKind::open};

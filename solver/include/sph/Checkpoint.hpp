@@ -83,6 +83,12 @@ template <int D>
 void writeCheckpoint(const std::string& path, const Simulation<D>& sim, const RunProgress& progress,
                      RunFile& runFile, std::vector<SeriesColumn>& series, RecordChain& chain,
                      const StepCounters* failedStep = nullptr);
+// The same of a simulation's state over several processes, gathered (Simulation::gatherWhole).
+template <int D>
+void writeCheckpoint(const std::string& path, const Scene& scene,
+                     const typename Simulation<D>::Whole& state, const RunProgress& progress,
+                     RunFile& runFile, std::vector<SeriesColumn>& series, RecordChain& chain,
+                     const StepCounters* failedStep = nullptr);
 
 // The scene a checkpoint continues, parsed from its text as the scene file was (its `file` the
 // scene file's path then). Throws CheckpointError.

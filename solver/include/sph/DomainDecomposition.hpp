@@ -59,6 +59,9 @@ class DomainDecomposition {
   virtual void gather(const Particles<D>& owned, const std::vector<int>& ids,
                       const std::vector<std::int64_t>& keys, Particles<D>& all,
                       std::vector<int>& allIds) const = 0;
+  // The same for `width` numbers a particle (`rows`, owned particle i's at i * width).
+  virtual void gather(const std::vector<double>& rows, int width,
+                      const std::vector<std::int64_t>& keys, std::vector<double>& all) const = 0;
 };
 
 // The slabs of MPI_COMM_WORLD across the scene's longest axis, or none when the run has one
@@ -72,7 +75,7 @@ int launchedProcesses();
 int launchedRank();
 
 // MPI for a program a launcher started among others (launchedProcesses() > 1): started here,
-// finished when this goes. Throws std::runtime_error where the build has no MPI.
+// finished when this goes. Throws std::invalid_argument (bad input) where the build has no MPI.
 class Processes {
  public:
   Processes();

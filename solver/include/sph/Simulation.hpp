@@ -134,13 +134,24 @@ class Simulation {
     LineVector<double> listedH;
   };
   Resumable resumable() const;
+  // The whole domain's particles, Resumable and rates in one process's order: over several
+  // processes gathered on process 0 (every process calls it; the others get nothing), so that a
+  // checkpoint is the one a single process writes.
+  struct Whole {
+    Particles<D> particles;
+    Resumable state;
+    Derivatives<D> rates;
+  };
+  void gatherWhole(Whole& w) const;
   // Continues from a Resumable, on a simulation made from the checkpoint's particles, whose
-  // rates were `rates`. The neighbour lists are built again from the listed positions and h (the
-  // same halo, cells and pairs as then: nothing else sets them). With `verify` the state's rates
-  // are evaluated again with them (the step that wrote the state had moved it less than the skin
-  // from there, or listed it) and the result says whether they are `rates` to the bit; without
-  // (a state whose step then failed, which may have listed its trial state) `rates` are taken.
-  // Throws std::invalid_argument where r does not fit this simulation (another particle count).
+  // rates were `rates`. Over several processes (after distribute()) r and rates are the whole
+  // domain's in one process's order, and each process takes its own particles' part. The neighbour
+  // lists are built again from the listed positions and h (the same halo, cells and pairs as then:
+  // nothing else sets them). With `verify` the state's rates are evaluated again with them (the
+  // step that wrote the state had moved it less than the skin from there, or listed it) and the
+  // result says whether they are `rates` to the bit; without (a state whose step then failed, which
+  // may have listed its trial state) `rates` are taken. Throws std::invalid_argument where r does
+  // not fit this simulation (another particle count).
   bool resume(const Resumable& r, const Derivatives<D>& rates, bool verify);
   const Derivatives<D>& currentRates() const { return f_; }
 

@@ -16,7 +16,7 @@ template std::shared_ptr<DomainDecomposition<3>> slabDecomposition<3>(const Scen
 
 Processes::Processes() {
   if (const int n = launchedProcesses(); n > 1)
-    throw std::runtime_error("launched as " + std::to_string(n) +
+    throw std::invalid_argument("launched as " + std::to_string(n) +
                              " processes, but this sph was built without MPI (configure with "
                              "libopenmpi-dev installed, SPH_MPI ON); run it as one process");
 }

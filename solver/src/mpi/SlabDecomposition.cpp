@@ -222,6 +222,26 @@ class SlabDecomposition final : public DomainDecomposition<D> {
       all.resize(0), allIds.clear();
   }
 
+  void gather(const std::vector<double>& rows, int width, const std::vector<std::int64_t>& keys,
+              std::vector<double>& all) const override {
+    std::vector<double> mine;  // each row led by its key (exact as a double below 2^53)
+    mine.reserve(keys.size() * (width + 1));
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      mine.push_back(static_cast<double>(keys[i]));
+      mine.insert(mine.end(), rows.begin() + i * width, rows.begin() + (i + 1) * width);
+    }
+    std::vector<int> counts, offsets;
+    const std::vector<double> every = gatherTo0(mine, counts, offsets);
+    all.clear();
+    if (rank_ != 0) return;
+    const std::size_t n = every.size() / (width + 1);
+    all.resize(n * width);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double* row = every.data() + k * (width + 1);
+      std::copy(row + 1, row + 1 + width, all.begin() + static_cast<std::int64_t>(row[0]) * width);
+    }
+  }
+
  private:
   int owner(double x) const {
     if (periodic_) x = lo_ + (x - lo_) - period_ * std::floor((x - lo_) / period_);
