@@ -10,7 +10,7 @@ import tomllib
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from runfile import NAMED, PAPER, family, model_of, read_results, read_runs
+from runfile import NAMED, family, in_verdict, model_of, read_results, read_runs
 
 COMPARISONS = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge, "==": operator.eq}
 PASS, FAIL, NOT_RUN = "pass", "fail", "not run"
@@ -167,9 +167,10 @@ def judged(found: list) -> list:
     named model's criteria; where a case has no named-model criterion (the two-fluid scenes: the solver refuses
     density diffusion with two phases) its paper's criteria, the model that case runs. A case's named-model check
     that lost its runs still records a failed criterion (validate.py: "run file present"), so a missing named run
-    never hands the verdict back to the paper's rows."""
+    never hands the verdict back to the paper's rows. validate.py's exit code follows the same rule
+    (runfile.in_verdict), its named cases read from the run files the report reads."""
     named_cases = {c.family for c in found if c.model == NAMED}
-    return [c for c in found if c.model != PAPER or c.family not in named_cases]
+    return [c for c in found if in_verdict(c.model, c.family, named_cases)]
 
 
 def findings(found: list) -> list:

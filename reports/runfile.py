@@ -217,6 +217,14 @@ def model_of(scene_name: str) -> str:
     return NAMED if str(scene_name).endswith(NAMED_SUFFIX) else PAPER
 
 
+def in_verdict(model: str, case: str, named_cases) -> bool:
+    """Whether a criterion of `model` (PAPER, NAMED or "" for a verification test) in validation case `case` counts
+    in the verdict (issue 31): every one but the paper's model's in a case the named model runs too (`named_cases`,
+    the cases with a named-model criterion), which are findings, shown and not decided on. The one rule of the
+    report (criteria.judged) and of validate.py's exit code (validation/validate.py, Results.write)."""
+    return model != PAPER or case not in named_cases
+
+
 def paper_twin(scene_name: str) -> str:
     """The paper's scene a named-model scene is the variant of (dam_break_dx0.025_named -> dam_break_dx0.025)."""
     return str(scene_name).removesuffix(NAMED_SUFFIX)

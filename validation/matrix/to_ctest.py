@@ -4,14 +4,30 @@
     to_ctest.py MATRIX OUT.cmake
 
 One `sph_matrix_run(NAME TIER TIMEOUT THREADS)` a run, `sph_validation_recover(NAME TIER TIMEOUT)` where
-the run has recover_timeout_s, and `sph_validation_check(NAME CASE TIER RUNS...)` a check (the functions are
-validation/CMakeLists.txt's). The file is rewritten only when its text changes, so that an unchanged matrix does
+the run has recover_timeout_s, `sph_validation_check(NAME CASE TIER RUNS...)` a check, and
+`sph_validation_after(NAME RUNS...)` for a check of the paper's model in a case the named model runs too: it starts
+after the named model's runs of its case (the functions are validation/CMakeLists.txt's). The file is rewritten only when its text changes, so that an unchanged matrix does
 not make CMake regenerate. Exit 2 with the matrix's error on bad input.
 """
 import sys
 from pathlib import Path
 
 import matrix
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent.parent / "reports"))
+from runfile import NAMED, PAPER, model_of  # noqa: E402  (the models' names, issue 31)
+
+
+def named_runs(m: matrix.Matrix) -> dict:
+    """{case: the named model's runs of its checks, in the matrix's order}. A check of the paper's model waits for
+    them: validate.py counts its failures as findings when a named-model run file of its case is there
+    (validate.py, named_cases), as the report does (reports/criteria.py, judged)."""
+    out: dict = {}
+    for c in m.checks:
+        for r in c.runs:
+            if model_of(r) == NAMED and r not in out.setdefault(c.case, []):
+                out[c.case].append(r)
+    return out
 
 
 def cmake_text(m: matrix.Matrix) -> str:
@@ -20,8 +36,11 @@ def cmake_text(m: matrix.Matrix) -> str:
         lines.append(f"sph_matrix_run({r.name} {r.tier} {r.timeout_s} {r.threads})")
         if r.recover_timeout_s:
             lines.append(f"sph_validation_recover({r.name} {r.tier} {r.recover_timeout_s})")
+    named = named_runs(m)
     for c in m.checks:
         lines.append(f"sph_validation_check({c.name} {c.case} {c.tier} {' '.join(c.runs)})")
+        if named.get(c.case) and all(model_of(r) == PAPER for r in c.runs):
+            lines.append(f"sph_validation_after({c.name} {' '.join(named[c.case])})")
     return "\n".join(lines) + "\n"
 
 

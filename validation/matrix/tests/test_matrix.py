@@ -71,6 +71,25 @@ def test_to_ctest_writes_one_call_a_run_recover_and_check(tmp_path):
     assert to_ctest.main([str(write(tmp_path, "[[run]]\n")), str(out)]) == 2 and not out.exists()
 
 
+def test_a_paper_check_starts_after_the_named_runs_of_its_case():
+    """validate.py counts a paper check's failures as findings when a named-model run file of its case is there
+    (issue 31), so the check is ordered after those runs (DEPENDS: it pulls none of them into a selection)."""
+    m = matrix.load()
+    after = {line.split("(")[1].split()[0]: line.rstrip(")").split()[1:]
+             for line in to_ctest.cmake_text(m).splitlines() if line.startswith("sph_validation_after(")}
+    named = {c.case: set() for c in m.checks}
+    for c in m.checks:
+        named[c.case] |= {r for r in c.runs if r.endswith("_named")}
+    for c in m.checks:
+        paper = not any(r.endswith("_named") for r in c.runs)
+        if paper and named[c.case]:
+            assert set(after[c.name]) == named[c.case], c.name
+        else:
+            assert c.name not in after, c.name
+    assert "two_fluids" not in after and "two_fluids_quick" not in after  # the paper's model alone (no twin)
+    assert "dam_break_quick_named" not in after and "dam_break_lobovsky_named" in after["dam_break_quick"]
+
+
 def fake_sph(tmp_path, body: str) -> Path:
     p = tmp_path / "sph"
     p.write_text("#!/bin/sh\n" + body + "\n")
