@@ -25,17 +25,24 @@ def fit_order(x, error):
 _WORD = re.compile(r"[a-z0-9.]+")
 
 
+_NORMS = {"l1", "l2", "linf"}
+
+
 def order_criterion(entry: dict, checks: list):
     """The check of the same result file that decides this convergence entry's order: among the checks whose name
-    says "order", the one sharing most words with the entry's name (None when the file has no order check; the
-    entry is then a finding). Returns {name, measured, comparison, threshold, pass}."""
+    says "order" and names no other error norm than the entry's (an L2 order check does not decide an Linf entry),
+    the one sharing most words with the entry's name (None when the file has no such check; the entry is then a
+    finding). Returns {name, measured, comparison, threshold, pass}."""
     words = set(_WORD.findall(str(entry.get("name", "")).lower()))
     best, score = None, -1
     for c in checks:
         name = str(c.get("name", ""))
         if "order" not in name.lower() or not isinstance(c.get("threshold"), (int, float)):
             continue
-        shared = len(words & set(_WORD.findall(name.lower())))
+        named = set(_WORD.findall(name.lower()))
+        if (named & _NORMS) and (words & _NORMS) and (named & _NORMS) != (words & _NORMS):
+            continue
+        shared = len(words & named)
         if shared > score:
             best, score = c, shared
     if best is None:

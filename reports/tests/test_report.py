@@ -381,6 +381,15 @@ def test_convergence_plot_carries_its_order_criterion(tmp_path, make_result):
     assert 'class="r-fail">FAIL</span> criterion' in (out / "verification.html").read_text()
 
 
+def test_an_order_check_of_one_norm_does_not_decide_another_norms_plot():
+    from analysis import order_criterion
+    l2 = {"name": "Poiseuille L2 observed order at t = 0.0225 s", "measured": 2.09, "threshold": 1.5,
+          "comparison": ">=", "pass": True}
+    assert order_criterion({"name": "Poiseuille Linf error / v_max at t = 0.0225 s"}, [l2]) is None
+    assert order_criterion({"name": "Poiseuille L2 error / v_max at t = 0.0225 s"}, [l2])["measured"] == 2.09
+    assert order_criterion({"name": "Poiseuille error / v_max at t = 0.0225 s"}, [l2])["measured"] == 2.09
+
+
 def test_every_page_has_the_navigation_and_figures_have_anchors(tmp_path, make_run):
     make_run(tmp_path / "runs" / "dam_break.h5", "dam_break")
     rc, out, summary = report(tmp_path, tmp_path / "runs")
