@@ -422,16 +422,21 @@ class CellList {
       if (a != longest) g.axis[k++] = a;
     g.axis[D - 1] = longest;
     for (int a = 0; a < D; ++a) g.lo[a] = lo[g.axis[a]];
-    // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct.
+    // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct. The
+    // cells are counted in doubles, so that a box of any extent (a wall 1e300 m away) gives a
+    // count, not an integer overflow, and coarser cells until it fits.
     g.size = cellSize;
+    const double most = static_cast<double>(cellsPerPoint) * static_cast<double>(n) + 64.0;
     for (;;) {
-      g.total = 1;
-      for (int a = 0; a < D; ++a) {
-        g.dims[a] = static_cast<int>(std::floor((hi[g.axis[a]] - g.lo[a]) / g.size)) + 1;
-        g.total *= g.dims[a];
-      }
-      if (g.total <= static_cast<std::int64_t>(cellsPerPoint * n + 64)) break;
+      double total = 1.0;
+      for (int a = 0; a < D; ++a) total *= std::floor((hi[g.axis[a]] - g.lo[a]) / g.size) + 1.0;
+      if (total <= most) break;
       g.size *= 2.0;
+    }
+    g.total = 1;
+    for (int a = 0; a < D; ++a) {
+      g.dims[a] = static_cast<int>(std::floor((hi[g.axis[a]] - g.lo[a]) / g.size)) + 1;
+      g.total *= g.dims[a];
     }
     g.inverse = 1.0 / g.size;
     g.frameDims = g.dims;
