@@ -17,8 +17,8 @@ template std::shared_ptr<DomainDecomposition<3>> slabDecomposition<3>(const Scen
 Processes::Processes() {
   if (const int n = launchedProcesses(); n > 1)
     throw std::invalid_argument("launched as " + std::to_string(n) +
-                             " processes, but this sph was built without MPI (configure with "
-                             "libopenmpi-dev installed, SPH_MPI ON); run it as one process");
+                                " processes, but this sph was built without MPI (configure with "
+                                "libopenmpi-dev installed, SPH_MPI ON); run it as one process");
 }
 Processes::~Processes() = default;
 
