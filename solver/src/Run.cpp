@@ -326,27 +326,24 @@ int run(const Scene& scene, const RunOptions& opt) {
     r.volume0 = series.volume0, r.total0 = series.total0, r.maxVariation = series.maxVariation;
     r.energyKinetic = energy.start().kinetic, r.energyInternal = energy.start().internal;
     r.energyPotential = energy.start().potential, r.energyRoundOff = energy.roundOff();
-    if (domain) {  // the one-process checkpoint, from the gathered state
-      StepCounters failed;
+    // Over several processes, the one-process checkpoint from the gathered state.
+    typename Simulation<D>::Whole state;
+    StepCounters failed;
+    if (domain) {
       if (failedStep) {
         failed = *failedStep;
         failed.reflections = whole.sum(failed.reflections);
         domain->maxAll(&failed.reflectionDepth, 1);
+        failedStep = &failed;
       }
-      typename Simulation<D>::Whole state;
       sim.gatherWhole(state);
       if (!out) return;
-      try {
-        writeCheckpoint<D>(checkpoint, scene, state, r, *out, series.columns, chain,
-                           failedStep ? &failed : nullptr);
-      } catch (const OutputError& e) {
-        out->outputFailedBeside(e.what());
-        throw;
-      }
-      return;
     }
     try {
-      writeCheckpoint<D>(checkpoint, sim, r, *out, series.columns, chain, failedStep);
+      if (domain)
+        writeCheckpoint<D>(checkpoint, scene, state, r, *out, series.columns, chain, failedStep);
+      else
+        writeCheckpoint<D>(checkpoint, sim, r, *out, series.columns, chain, failedStep);
     } catch (const OutputError& e) {
       out->outputFailedBeside(e.what());  // the run stops (exit 4) with the file saying why
       throw;
@@ -417,8 +414,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   const double onAll = tuner.shareOnAll();
   const double wall = std::chrono::duration<double>(clock::now() - start).count();
   const bool early = failure || interrupted || stopped;
-  const bool checkpointed = early;
-  if (checkpointed) writeCheckpointNow(failure ? &beforeStep : nullptr);
+  if (early) writeCheckpointNow(failure ? &beforeStep : nullptr);
   const std::int64_t particles = whole.sum(static_cast<std::int64_t>(sim.particles().size()));
   const std::int64_t reflections = whole.sum(sim.wallReflections());
   if (failure) {
@@ -486,14 +482,12 @@ int run(const Scene& scene, const RunOptions& opt) {
       std::printf("  steps on %d threads %.0f %%, on one %.0f %%%s\n", maxThreads, 100 * onAll,
                   100 * (1 - onAll), opt.fixedThreads ? " (--fixed-threads)" : "");
     std::printf("  run file %s\n", file.path().c_str());
-    if (checkpointed) std::printf("  checkpoint %s\n", checkpoint.c_str());
+    if (early) std::printf("  checkpoint %s\n", checkpoint.c_str());
   }
-  const std::string resume =
-      checkpointed ? "; sph run --restart " + checkpoint + " continues it" : std::string();
+  const std::string resume = "; sph run --restart " + checkpoint + " continues it";
   if (failure) {
     std::cerr << scene.file << ": numerical failure (" << name(failure->cause)
-              << "): " << failure->message << "; "
-              << (checkpointed ? "the checkpoint " + checkpoint : "the run file " + file.path())
+              << "): " << failure->message << "; the checkpoint " << checkpoint
               << " holds the last good state\n";
     return exitNumericalFailure;
   }
@@ -517,15 +511,13 @@ int run(const Scene& scene, const RunOptions& opt) {
 
 int runScene(const Scene& scene, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  // What a run over several processes does not do yet (solver/src/mpi/DESIGN-MPI.md).
-  if (const int n = launchedProcesses(); n > 1) {
-    auto refuse = [&](const std::string& what) {
-      throw std::invalid_argument(scene.file + ": " + what + " runs as one process, not as the " +
-                                  std::to_string(n) + " processes it was launched as (mpirun -n " +
-                                  std::to_string(n) + ")");
-    };
-    if (scene.shifting.form != ShiftingForm::none) refuse("a scene with particle shifting");
-  }
+  // Particle shifting's sums are not split over processes yet (solver/src/mpi/DESIGN-MPI.md).
+  if (const int n = launchedProcesses(); n > 1 && scene.shifting.form != ShiftingForm::none)
+    throw std::invalid_argument(scene.file +
+                                ": a scene with particle shifting runs as one process, "
+                                "not as the " +
+                                std::to_string(n) + " processes it was launched as (mpirun -n " +
+                                std::to_string(n) + ")");
   RunLimits limits = options.limits;
   limits.outDir = options.outDir;
   RunEstimate estimate = checkMemory(scene, limits);

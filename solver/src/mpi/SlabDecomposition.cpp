@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
@@ -342,9 +343,11 @@ Processes::Processes() {
   }
 }
 Processes::~Processes() {
+  // Not while an error unwinds: the other processes may wait in a collective call, and a process
+  // that exits unfinalized makes the launcher end them all.
   int finished = 0;
   MPI_Finalized(&finished);
-  if (started_ && !finished) MPI_Finalize();
+  if (started_ && !finished && std::uncaught_exceptions() == 0) MPI_Finalize();
 }
 
 }  // namespace sph
