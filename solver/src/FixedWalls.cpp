@@ -1,8 +1,10 @@
 #include "sph/FixedWalls.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "sph/Parallel.hpp"
 
@@ -55,47 +57,88 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
       base, [&](std::size_t f, int a) { return set.x[f][a]; }, frame_.box, reach, 4, base,
       typename CellList<D>::EvenLayers{}, &frame_);
   const auto& order = cells_.order();
+  // The entries' coordinates in the cells' order, one array an axis, so that a row of cells is
+  // one contiguous stretch for the distance test below.
+  for (int a = 0; a < D; ++a) sorted_[a].resize(base);
+  for (std::size_t k = 0; k < base; ++k)
+    for (int a = 0; a < D; ++a) sorted_[a][k] = set.x[order[k]][a];
+  std::array<const double*, D> sorted;
+  for (int a = 0; a < D; ++a) sorted[a] = sorted_[a].data();
   set.resize(base + static_cast<std::size_t>(nWall));
   const bool moving = !velocity_.empty(), ownVolumes = !volume_.empty();
+  // Candidates farther than the support by more than rounding are dropped in a vector pass over
+  // a row; the survivors then take the test and the sums below exactly as written, in the cells'
+  // order, so the pass changes the speed and not one bit of the result.
+  const double candidate2 = reach2 * (1.0 + 1e-9);
   // The kernel chosen once, outside the loops (kernelValue would switch on it at every pair).
   withKernel(kernel_, [&](auto kernel) {
     using Kernel = decltype(kernel);
-#pragma omp parallel for schedule(static) if (nWall >= parallelFrom())
-    for (std::int64_t w = 0; w < nWall; ++w) {
-      const Vec<D>& xw = x_[w];
-      double sumW = 0, sumPW = 0;
-      Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
-      if (const std::int64_t c = cells_.cellOf(xw); c >= 0)
-        cells_.forEachAdjacentRange(c, [&](int begin, int end) {
-          for (int k = begin; k < end; ++k) {
-            const int f = order[k];
+#pragma omp parallel if (nWall >= parallelFrom())
+    {
+      std::vector<double> r2row;
+      std::vector<int> near;
+      // The rows of the cells around the last wall particle's cell: wall particles come along
+      // the walls, several to a cell, and the rows are the same for each of them.
+      std::vector<std::pair<int, int>> rows;
+      std::int64_t rowsOf = -2;
+#pragma omp for schedule(static)
+      for (std::int64_t w = 0; w < nWall; ++w) {
+        const Vec<D>& xw = x_[w];
+        double sumW = 0, sumPW = 0;
+        Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
+        // (the rows of forEachAdjacentRow hold forEachAdjacentRange's cells in its order)
+        if (const std::int64_t c = cells_.cellOf(xw); c != rowsOf) {
+          rows.clear(), rowsOf = c;
+          if (c >= 0)
+            cells_.forEachAdjacentRow(c,
+                                      [&](int begin, int end) { rows.emplace_back(begin, end); });
+        }
+        for (const auto& [begin, end] : rows) {
+          const int n = end - begin;
+          if (r2row.size() < static_cast<std::size_t>(n)) r2row.resize(n), near.resize(n);
+          double* r2 = r2row.data();
+          for (int j = 0; j < n; ++j) {
+            double s = 0;
+            for (int a = 0; a < D; ++a) {
+              const double d = xw[a] - sorted[a][begin + j];
+              s += d * d;
+            }
+            r2[j] = s;
+          }
+          // The candidates within the support, in order, without a branch a candidate (most
+          // lie outside it: a cube of cells around a sphere).
+          int nNear = 0;
+          for (int j = 0; j < n; ++j) near[nNear] = begin + j, nNear += r2[j] < candidate2;
+          for (int q = 0; q < nNear; ++q) {
+            const int f = order[near[q]];
             const Vec<D> r_wf = xw - set.x[f];
-            const double r2 = r_wf.squaredNorm();
-            if (r2 >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
-            const double W_wf = Kernel::template W<D>(std::sqrt(r2), h_);
+            const double r2_wf = r_wf.squaredNorm();
+            if (r2_wf >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
+            const double W_wf = Kernel::template W<D>(std::sqrt(r2_wf), h_);
             sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
             if (moving) sumVW += W_wf * set.v[f];
           }
-        });
-      // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
-      // Not below p0: see the header.
-      const double p =
-          sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
-      // p0 gives rho0 exactly ((p0 - p0) / K + 1 = 1): no root to take.
-      const double rho = p == phase_.p0 ? phase_.rho0 : TaitEquationOfState::density(p, phase_);
-      Vec<D> v = Vec<D>::Zero();
-      if (moving) {
-        const WallVelocityRule<D>& rule = velocity_[w];
-        if (!rule.atRest) {
-          const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
-          for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
-            v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
         }
+        // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
+        // Not below p0: see the header.
+        const double p =
+            sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
+        // p0 gives rho0 exactly ((p0 - p0) / K + 1 = 1): no root to take.
+        const double rho = p == phase_.p0 ? phase_.rho0 : TaitEquationOfState::density(p, phase_);
+        Vec<D> v = Vec<D>::Zero();
+        if (moving) {
+          const WallVelocityRule<D>& rule = velocity_[w];
+          if (!rule.atRest) {
+            const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
+            for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
+              v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
+          }
+        }
+        const std::size_t e = base + static_cast<std::size_t>(w);
+        set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
+        set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
+        set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;
       }
-      const std::size_t e = base + static_cast<std::size_t>(w);
-      set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
-      set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
-      set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;
     }
   });
 }

@@ -28,6 +28,7 @@
 // particle volume V0, so the balance sum_j grad W_ij V0 = 0 holds against these walls too.
 // Chosen over the fixed ghosts of Marrone et al. (2011) because eq. (27) needs no mirror point
 // and no interpolation inside the fluid, which on acute corners and arcs are ambiguous.
+#include <array>
 #include <vector>
 
 #include "sph/CellList.hpp"
@@ -81,6 +82,7 @@ class FixedWalls {
   // fluid in the same order whatever part of the fluid a process holds (DomainDecomposition.hpp).
   mutable CellList<D> cells_;
   typename CellList<D>::Frame frame_;
+  mutable std::array<std::vector<double>, D> sorted_;  // the entries' coordinates in cell order
   void frameTheWalls();
 };
 
