@@ -43,18 +43,57 @@ void FixedWalls<D>::frameTheWalls() {
       frame_.box.hi[a] = std::max(frame_.box.hi[a], x[a] + reach);
   if (x_.empty())
     for (int a = 0; a < D; ++a) frame_.box.lo[a] = 0.0, frame_.box.hi[a] = 0.0;
+  lo_ = Vec<D>::Constant(1e300), hi_ = Vec<D>::Constant(-1e300);
+  for (const Vec<D>& x : x_) lo_ = lo_.cwiseMin(x), hi_ = hi_.cwiseMax(x);
 }
 
 template <int D>
-void FixedWalls<D>::append(InteractionSet<D>& set) const {
+void FixedWalls<D>::choose(InteractionSet<D>& set, double reach) const {
+  // A pair (fluid i, wall w) is listed within h_i + h_w plus the skin (support 2 h_ij), which is
+  // below reach + h_w whatever h_i (reach = 2 h_max + skin).
+  const double near = reach + h_, near2 = near * near;
+  const std::size_t nFluid = set.nFluid;
+  std::vector<std::int64_t>& members = set.walls;
+  members.clear();
+  if (nFluid > 0 && std::isfinite(near) && near > 0) {
+    fluidCells_.build(
+        nFluid, [&](std::size_t f, int a) { return set.x[f][a]; }, near);
+    const auto& order = fluidCells_.order();
+    std::vector<char> in(x_.size(), 0);
+    const std::int64_t nWall = static_cast<std::int64_t>(x_.size());
+#pragma omp parallel for schedule(static) if (nWall >= parallelFrom())
+    for (std::int64_t w = 0; w < nWall; ++w) {
+      const std::int64_t c = fluidCells_.cellOf(x_[w]);
+      if (c < 0) continue;
+      bool any = false;
+      fluidCells_.forEachAdjacentRow(c, [&](int begin, int end) {
+        for (int k = begin; k < end && !any; ++k)
+          any = (x_[w] - set.x[order[k]]).squaredNorm() < near2;
+      });
+      in[w] = any;
+    }
+    for (std::int64_t w = 0; w < nWall; ++w)
+      if (in[w]) members.push_back(w);
+  }
+  set.leftOut.count = x_.size() - members.size();
+  set.leftOut.lo = lo_, set.leftOut.hi = hi_, set.leftOut.h = h_;
+}
+
+template <int D>
+void FixedWalls<D>::append(InteractionSet<D>& set, double reach, HaloMembers members) const {
   const std::size_t base = set.haloEnd();
-  const std::int64_t nWall = static_cast<std::int64_t>(x_.size());
-  const double reach = 2.0 * h_, reach2 = reach * reach;  // lambda h, lambda = 2 for every kernel
-  // The fluid and its periodic images into cells of side `reach`: a wall particle's neighbours
+  // (a set these walls never chose for is chosen for, whatever `members` says)
+  if (members == HaloMembers::rescan || set.walls.size() + set.leftOut.count != x_.size())
+    choose(set, reach);
+  const std::vector<std::int64_t>& chosen = set.walls;
+  const std::int64_t nWall = static_cast<std::int64_t>(chosen.size());
+  const double support = 2.0 * h_,
+               support2 = support * support;  // lambda h, lambda = 2 for every kernel
+  // The fluid and its periodic images into cells of side `support`: a wall particle's neighbours
   // lie in the cells around its own.
   // (a fluid entry beyond the frame falls in its edge cell, out of every wall particle's reach)
   cells_.build(
-      base, [&](std::size_t f, int a) { return set.x[f][a]; }, frame_.box, reach, 4, base,
+      base, [&](std::size_t f, int a) { return set.x[f][a]; }, frame_.box, support, 4, base,
       typename CellList<D>::EvenLayers{}, &frame_);
   const auto& order = cells_.order();
   // The entries' coordinates in the cells' order, one array an axis, so that a row of cells is
@@ -69,20 +108,21 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
   // Candidates farther than the support by more than rounding are dropped in a vector pass over
   // a row; the survivors then take the test and the sums below exactly as written, in the cells'
   // order, so the pass changes the speed and not one bit of the result.
-  const double candidate2 = reach2 * (1.0 + 1e-9);
+  const double candidate2 = support2 * (1.0 + 1e-9);
   // The kernel chosen once, outside the loops (kernelValue would switch on it at every pair).
   withKernel(kernel_, [&](auto kernel) {
     using Kernel = decltype(kernel);
 #pragma omp parallel if (nWall >= parallelFrom())
     {
       std::vector<double> r2row;
-      std::vector<int> near;
+      std::vector<int> inReach;
       // The rows of the cells around the last wall particle's cell: wall particles come along
       // the walls, several to a cell, and the rows are the same for each of them.
       std::vector<std::pair<int, int>> rows;
       std::int64_t rowsOf = -2;
 #pragma omp for schedule(static)
-      for (std::int64_t w = 0; w < nWall; ++w) {
+      for (std::int64_t q = 0; q < nWall; ++q) {
+        const std::int64_t w = chosen[q];
         const Vec<D>& xw = x_[w];
         double sumW = 0, sumPW = 0;
         Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
@@ -95,7 +135,7 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
         }
         for (const auto& [begin, end] : rows) {
           const int n = end - begin;
-          if (r2row.size() < static_cast<std::size_t>(n)) r2row.resize(n), near.resize(n);
+          if (r2row.size() < static_cast<std::size_t>(n)) r2row.resize(n), inReach.resize(n);
           double* r2 = r2row.data();
           for (int j = 0; j < n; ++j) {
             double s = 0;
@@ -108,12 +148,12 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
           // The candidates within the support, in order, without a branch a candidate (most
           // lie outside it: a cube of cells around a sphere).
           int nNear = 0;
-          for (int j = 0; j < n; ++j) near[nNear] = begin + j, nNear += r2[j] < candidate2;
-          for (int q = 0; q < nNear; ++q) {
-            const int f = order[near[q]];
+          for (int j = 0; j < n; ++j) inReach[nNear] = begin + j, nNear += r2[j] < candidate2;
+          for (int u = 0; u < nNear; ++u) {
+            const int f = order[inReach[u]];
             const Vec<D> r_wf = xw - set.x[f];
             const double r2_wf = r_wf.squaredNorm();
-            if (r2_wf >= reach2) continue;  // W = 0 from r = 2 h on: no root needed
+            if (r2_wf >= support2) continue;  // W = 0 from r = 2 h on: no root needed
             const double W_wf = Kernel::template W<D>(std::sqrt(r2_wf), h_);
             sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
             if (moving) sumVW += W_wf * set.v[f];
@@ -134,7 +174,7 @@ void FixedWalls<D>::append(InteractionSet<D>& set) const {
               v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
           }
         }
-        const std::size_t e = base + static_cast<std::size_t>(w);
+        const std::size_t e = base + static_cast<std::size_t>(q);
         set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
         set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
         set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;

@@ -319,7 +319,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   constexpr int cellsPerPoint = 4 << D;
   const int team = std::min(omp_get_max_threads(), CellList<D>::maxTeam);
   if (!reuse) {
-    w.cells.reserve(n, cellsPerPoint, team, w.framed ? w.frame.points : 0);
+    w.cells.reserve(n, cellsPerPoint, team, w.framed ? w.frame.points : n + set.leftOut.count);
     w.listBegin.resize(n), w.listCount.resize(n), w.listed = lists.skin > 0 ? n : 0;
     w.extents.resize(team);
   }
@@ -404,6 +404,12 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
       for (int a = 0; a < D; ++a)
         box.lo[a] = std::min(box.lo[a], e.box.lo[a]), box.hi[a] = std::max(box.hi[a], e.box.hi[a]);
     }
+    if (set.leftOut.count > 0) {  // the cells as if the wall particles left out were in
+      hMax = std::max(hMax, set.leftOut.h);
+      for (int a = 0; a < D; ++a)
+        box.lo[a] = std::min(box.lo[a], set.leftOut.lo[a]),
+        box.hi[a] = std::max(box.hi[a], set.leftOut.hi[a]);
+    }
     // No number along an axis (a NaN in every entry): the build goes on with that axis in one
     // layer, so that every barrier is met, and the error is thrown after the region.
     bool bad = false;
@@ -424,7 +430,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
     const Share placed = w.cells.buildInTeam(
         n, [&](std::size_t i, int a) { return set.x[i][a]; }, box,
         0.5 * (Kernel::support * hMax + lists.skin), cellsPerPoint, set.nFluid, cut,
-        w.framed ? &w.frame : nullptr);
+        w.framed ? &w.frame : nullptr, n + set.leftOut.count);
     std::fill(w.rate + rateWidth * placed.begin, w.rate + rateWidth * placed.end, 0.0);
     if (t == 0) setUpBands();
     return hMax;

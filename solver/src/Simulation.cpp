@@ -301,8 +301,9 @@ void Simulation<D>::mergeHalo(const Particles<D>& state, bool rescan) {
 template <int D>
 void Simulation<D>::frameGrid(double hMax) {
   // The whole set is every process's fluid and the halo entries of its own fluid (a halo copy's
-  // ghosts are its owner's too), and the fixed wall particles (no source; every process holds
-  // them all), its box the union of the processes' boxes.
+  // ghosts are its owner's too), and every fixed wall particle (no source; each process holds
+  // those within reach of its fluid and counts the others as left out), its box the union of
+  // the processes' boxes.
   double box[2 * D];
   for (int a = 0; a < D; ++a) box[a] = -1e300, box[D + a] = -1e300;
   std::int64_t entries = 0, fixed = 0;
@@ -315,6 +316,11 @@ void Simulation<D>::frameGrid(double hMax) {
     else
       entries += localOwned_[source];
   }
+  // (and those left out of the set as in no pair: InteractionSet::leftOut)
+  fixed += static_cast<std::int64_t>(set_.leftOut.count);
+  for (int a = 0; a < D && set_.leftOut.count > 0; ++a)
+    box[a] = std::max(box[a], -set_.leftOut.lo[a]),
+    box[D + a] = std::max(box[D + a], set_.leftOut.hi[a]);
   domain_->maxAll(box, 2 * D);
   entries = domain_->sumAll(entries) + fixed;
   double lo[D], hi[D];

@@ -126,16 +126,18 @@ class CellList {
     if (static_cast<int>(buckets_.size()) < threads * threads) buckets_.resize(threads * threads);
     blockSum_.resize(static_cast<std::size_t>(threads) * 16);
   }
+  // (`gridPoints`, where more than n: the points the grid is sized for, as if that many.)
   template <class Pos, class Cut = EvenLayers>
   Share buildInTeam(std::size_t n, Pos&& pos, const Box& box, double cellSize, int cellsPerPoint,
-                    std::size_t leading, Cut&& cut, const Frame* frame = nullptr) {
+                    std::size_t leading, Cut&& cut, const Frame* frame = nullptr,
+                    std::size_t gridPoints = 0) {
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
     const std::int64_t count = static_cast<std::int64_t>(n);
     const std::int64_t lead = static_cast<std::int64_t>(std::min(leading, n));
     // Every thread finds the grid (the same); the first stores it for the queries.
     const Grid g = frame ? windowOf(gridFor(frame->points, frame->box, cellSize, cellsPerPoint), n,
                                     box, frame->layerAlign)
-                         : gridFor(n, box, cellSize, cellsPerPoint);
+                         : gridFor(std::max(n, gridPoints), box, cellSize, cellsPerPoint);
     std::int64_t perLayer = 1;
     for (int a = 0; a + 1 < D; ++a) perLayer *= g.dims[a];
     const std::int64_t total = g.total;

@@ -60,8 +60,11 @@ class FixedWalls {
              const Vec<D>& g);
 
   // Writes the wall particles after the fluid and its halo of `set` (set.haloEnd()), their state
-  // from eqs. (22)-(28) over those entries (whose pressure `set` already holds).
-  void append(InteractionSet<D>& set) const;
+  // from eqs. (22)-(28) over those entries (whose pressure `set` already holds). Only those
+  // within `reach` (a pair's support plus the skin) of a fluid entry are written (set.walls), the
+  // others counted in set.leftOut: chosen anew with HaloMembers::rescan, kept with ::same (the
+  // same entries in the same places, for neighbour lists that are reused).
+  void append(InteractionSet<D>& set, double reach, HaloMembers members) const;
 
   const std::vector<Vec<D>>& positions() const { return x_; }
   std::size_t size() const { return x_.size(); }
@@ -83,6 +86,9 @@ class FixedWalls {
   mutable CellList<D> cells_;
   typename CellList<D>::Frame frame_;
   mutable std::array<std::vector<double>, D> sorted_;  // the entries' coordinates in cell order
+  mutable CellList<D> fluidCells_;  // the fluid in cells, for choosing the wall particles in a set
+  Vec<D> lo_, hi_;                  // the wall particles' box
+  void choose(InteractionSet<D>& set, double reach) const;
   void frameTheWalls();
 };
 

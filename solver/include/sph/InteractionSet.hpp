@@ -35,6 +35,16 @@ struct InteractionSet {
   // The halo's members by axis: 2 k + side for entry k's image across that axis's lower (0) or
   // upper (1) face, in the order the images follow the fluid.
   std::array<std::vector<std::int64_t>, D> halo;
+  // The fixed wall particles in the set (FixedWalls.hpp), by their index there, ascending: those
+  // within a pair's support plus the skin of a fluid entry. The others are in no pair and are
+  // left out; the pair loop lays out its cells as if they were in (their count, a box holding
+  // them, their h), so that which ones are left out changes no cell, no order and no sum.
+  std::vector<std::int64_t> walls;
+  struct LeftOut {
+    std::size_t count = 0;
+    Vec<D> lo = Vec<D>::Constant(1e300), hi = Vec<D>::Constant(-1e300);
+    double h = 0.0;
+  } leftOut;
 
   std::size_t size() const { return x.size(); }
   // Where the fluid and its halo end: entries appended after them (fixed wall particles) begin.
@@ -43,7 +53,7 @@ struct InteractionSet {
     for (const auto& h : halo) n += h.size();
     return n;
   }
-  void clear() { resize(0); }
+  void clear() { resize(0), walls.clear(), leftOut = {}; }
   void resize(std::size_t n) {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
     source.resize(n);

@@ -98,7 +98,7 @@ template <int D>
 void WallParticles<D>::build(const Particles<D>& fluid, const std::vector<Phase>& phases,
                              double reach, HaloMembers members, InteractionSet<D>& set) const {
   buildInteractionSet(fluid, phases, halo_, reach, ghostGravity_, set, members);
-  walls_->append(set);
+  walls_->append(set, reach, members);
 }
 
 template <int D>
