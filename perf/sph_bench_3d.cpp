@@ -66,10 +66,11 @@ sph::Scene sceneOf(const std::string& path, double endTime = 0) {
   return sph::parseScene(withEndTime(buf.str(), endTime), path);
 }
 
-// Wall particles: the entries of the interaction set after the fluid and its halo.
+// Wall particles: the entries of the interaction set after the fluid and its halo, and those left
+// out of it as in no pair (all of the scene's).
 std::size_t wallParticles(const sph::Simulation<3>& sim) {
   const auto& set = sim.interactionSet();
-  return set.size() - set.haloEnd();
+  return set.size() - set.haloEnd() + set.leftOut.count;
 }
 
 int memory(const std::string& path) {
