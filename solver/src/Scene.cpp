@@ -32,6 +32,8 @@ std::string_view name(TimeIntegrator i) {
       return "predictor_corrector";
     case TimeIntegrator::position_verlet:
       return "position_verlet";
+    case TimeIntegrator::velocity_verlet:
+      return "velocity_verlet";
   }
   throw std::logic_error("name: TimeIntegrator " + std::to_string(static_cast<int>(i)) +
                          " is not an integrator this build knows");
@@ -257,10 +259,11 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
 }
 
 TimeIntegrator integratorKind(SceneTable& t, const std::string& v) {
-  for (TimeIntegrator i : {TimeIntegrator::predictor_corrector, TimeIntegrator::position_verlet})
+  for (TimeIntegrator i : {TimeIntegrator::predictor_corrector, TimeIntegrator::position_verlet,
+                           TimeIntegrator::velocity_verlet})
     if (v == name(i)) return i;
-  t.fail("integrator",
-         "unknown integrator '" + v + "' (expected predictor_corrector or position_verlet)");
+  t.fail("integrator", "unknown integrator '" + v +
+                           "' (expected predictor_corrector, position_verlet or velocity_verlet)");
 }
 
 // physics.density_diffusion (delta) and its form. Both forms diffuse density differences, and

@@ -14,6 +14,7 @@
 #include "sph/Parallel.hpp"
 #include "sph/integrators/PositionVerlet.hpp"
 #include "sph/integrators/PredictorCorrector.hpp"
+#include "sph/integrators/VelocityVerlet.hpp"
 
 namespace sph {
 
@@ -119,13 +120,18 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
       skinFraction_(scene.neighbourSkin) {
   // The scene's word for each (name(TimeIntegrator), Scene.cpp) is the integrator's own.
   static_assert(integrators::PositionVerlet::name == "position_verlet" &&
-                integrators::PredictorCorrector::name == "predictor_corrector");
+                integrators::PredictorCorrector::name == "predictor_corrector" &&
+                integrators::VelocityVerlet::name == "velocity_verlet");
   switch (scene.integrator) {
     case TimeIntegrator::predictor_corrector:
       advance_ = &Simulation::advanceWith<integrators::PredictorCorrector>;
       break;
     case TimeIntegrator::position_verlet:
       advance_ = &Simulation::advanceWith<integrators::PositionVerlet>;
+      break;
+    case TimeIntegrator::velocity_verlet:
+      advance_ = &Simulation::advanceWith<integrators::VelocityVerlet>;
+      ratesOfState_ = false;
       break;
   }
   // No default: -Wswitch names an enumerator missing above; any other value is a bug.
@@ -333,6 +339,10 @@ void Simulation<D>::distribute(std::shared_ptr<DomainDecomposition<D>> d) {
   if (source_) throw std::logic_error("Simulation::distribute: a source runs in one process");
   // (the shifts are summed over the set's fluid entries, owned and halo alike: not yet split)
   if (shifting_) throw std::logic_error("Simulation::distribute: shifting runs in one process");
+  // (the rates a step carries to the next would have to migrate with their particles)
+  if (!ratesOfState_)
+    throw std::logic_error("Simulation::distribute: " + std::string(name(scene_.integrator)) +
+                           " runs in one process");
   domain_ = std::move(d);
   if (!domain_) return;
   key_.resize(y_.size());
@@ -722,6 +732,12 @@ std::optional<Failure> Simulation<D>::advanceWith(double dtMax) {
   std::swap(y_, yStar_);
   t_ += dt, dt_ = dt, limit_ = limit;
   ++step_;
+  if constexpr (Integrator::evaluationsPerStep == 1) {
+    // The trial state's rates are the new state's (the integrator says why).
+    std::swap(f_, fStar_);
+    if (cellOrderEvery_ > 0 && step_ % cellOrderEvery_ == 0) storeInCellOrder();
+    return std::nullopt;
+  }
   if (cellOrderEvery_ > 0 && step_ % cellOrderEvery_ == 0) storeInCellOrder();
   // The motion is of y's particles whatever their order (h_max does not depend on it); new
   // lists follow a new order (storeInCellOrder clears the positions they were built at).
@@ -768,7 +784,15 @@ void Simulation<D>::storeInCellOrder() {
   });
   std::swap(y_, to);
   std::swap(id_, idScratch_);
-  listedAt_.clear();  // the lists were of the old order
+  listedAt_.clear();           // the lists were of the old order
+  if (ratesOfState_) return;   // the next evaluation is of y
+  Derivatives<D>& g = fStar_;  // free until the next step's evaluation
+  g.resize(n);
+  forEachInShares(n, [&](std::int64_t k) {
+    const int i = order_[k];
+    g.dvdt[k] = f_.dvdt[i], g.drhodt[k] = f_.drhodt[i], g.dhdt[k] = f_.dhdt[i];
+  });
+  std::swap(f_, g);
 }
 
 template <int D>
@@ -878,7 +902,8 @@ bool Simulation<D>::resume(const Resumable& whole, const Derivatives<D>& wholeRa
     this->rates(listed, t_, fStar_);
   }
   bool same = true;
-  if (verify) {
+  // (rates carried from the step before, not of the state: nothing to evaluate them against)
+  if (verify && ratesOfState_) {
     this->rates(y_, t_, f_);
     auto equal = [](const auto& a, const auto& b) {
       return std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;

@@ -100,6 +100,15 @@ TEST(Restart, PositionVerletDamBreakStoppedHalfwayContinuesBitForBit) {
             "position_verlet");
 }
 
+// The same with velocity Verlet (issue 36), whose rates go from step to step (and into the
+// checkpoint) without being those of the state: taken as they are, reordered with the particles.
+TEST(Restart, VelocityVerletDamBreakStoppedHalfwayContinuesBitForBit) {
+  const std::string out = freshOutputDirectory();
+  expectStopAndContinueBitForBit(shortDamBreak(out, "velocity_verlet"), out);
+  EXPECT_EQ(stringAttribute(out + "/part/dam_break_dx0.025.h5", "/", "integrator"),
+            "velocity_verlet");
+}
+
 // The same in 3-D (CORE_SCENES/hydrostatic_box_3d.toml: 512 particles, 290 steps), whose
 // checkpoint stores 3-vectors and whose lists hold the ghosts of five walls.
 TEST(Restart, Box3dStoppedHalfwayContinuesBitForBit) {

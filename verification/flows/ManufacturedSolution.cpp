@@ -77,6 +77,17 @@ TEST(ManufacturedSolution, PositionVerletIsSecondOrderInTime) {
                       "theory 2, plus 0.1"));
 }
 
+// Issue 31: the same for velocity Verlet (integrators/VelocityVerlet.hpp), whose new state's rates
+// are its prediction's, O(dt^2) off: second order still.
+TEST(ManufacturedSolution, VelocityVerletIsSecondOrderInTime) {
+  Results r;
+  const double order = temporalOrder(r, "velocity_verlet");
+  EXPECT_TRUE(r.check("MMS observed order in time, velocity Verlet", order, ">=", 1.9,
+                      "theory 2 (trapezoidal rules, rates O(dt^2) off), minus 0.1"));
+  EXPECT_TRUE(r.check("MMS observed order in time, velocity Verlet (upper)", order, "<=", 2.1,
+                      "theory 2, plus 0.1"));
+}
+
 TEST(ManufacturedSolution, SpatialErrorAtFixedHOverDx) {
   Results r;
   const double T = 0.25;

@@ -38,6 +38,9 @@ inline const Model fourtakas{
 // The same with position Verlet (integrators/PositionVerlet.hpp) for the time step.
 inline const Model fourtakasVerlet{"paper + Fourtakas delta 0.1, position Verlet",
                                    fourtakas.physics, "integrator = \"position_verlet\"\n"};
+// ... and with velocity Verlet (integrators/VelocityVerlet.hpp): one force evaluation a step.
+inline const Model fourtakasVelocityVerlet{"paper + Fourtakas delta 0.1, velocity Verlet",
+                                           fourtakas.physics, "integrator = \"velocity_verlet\"\n"};
 
 // The same with particle shifting (ParticleShifting.hpp) at its default coefficient: Lind et al.'s
 // Fickian form (D = 2 h |u| dt) and delta-plus (D = 4 h max|u| dt).

@@ -38,6 +38,12 @@ TEST(TankAtRest, NamedModelWithPositionVerletHoldsStillAtHOverDx20) {
   expectStill(fourtakasVerlet);
 }
 
+// The same with velocity Verlet at the default acoustic CFL 0.25: one force evaluation a step, the
+// rates of each state taken from its prediction (VelocityVerlet.hpp).
+TEST(TankAtRest, NamedModelWithVelocityVerletHoldsStillAtHOverDx20) {
+  expectStill(fourtakasVelocityVerlet);
+}
+
 // The same with Lind et al.'s particle shifting (ParticleShifting.hpp, A = 2). Measured to 100:
 // max|u| 3.8e-3 sqrt(gH), bottom pressure 0.73 % off, as without shifting (3.8e-3, 0.73 %): at
 // rest D = A h |u| dt is small and the shift with it.

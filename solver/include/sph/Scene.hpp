@@ -67,8 +67,9 @@ enum class WallModel { mirror_ghosts, wall_particles };
 std::string_view name(WallModel);
 
 // The time integrator ([numerics] integrator, solver/SCENES.md): the paper's predictor-corrector
-// (integrators/PredictorCorrector.hpp) or position Verlet (integrators/PositionVerlet.hpp).
-enum class TimeIntegrator { predictor_corrector, position_verlet };
+// (integrators/PredictorCorrector.hpp), position Verlet (integrators/PositionVerlet.hpp) or
+// velocity Verlet with one force evaluation a step (integrators/VelocityVerlet.hpp).
+enum class TimeIntegrator { predictor_corrector, position_verlet, velocity_verlet };
 std::string_view name(TimeIntegrator);
 
 // A solid box inside the domain made of fixed wall particles ([[obstacle]]).

@@ -224,6 +224,7 @@ class Simulation {
   LineVector<double> listedH_;
   double reflectionDepth_ = 0.0;
   bool ratesValid_ = false;
+  bool ratesOfState_ = true;  // false: f_ is carried from the step before (VelocityVerlet.hpp)
   std::shared_ptr<DomainDecomposition<D>> domain_;  // null: one process
   std::vector<std::int64_t> key_, haloKey_, cells_;
   Particles<D> halo_, local_;

@@ -3,7 +3,8 @@
 // per-particle update captures by value (through a reference each would be loaded again after
 // every store), and the stages of a step. An integrator is a type with
 //   name                the run file's word for it,
-//   evaluationsPerStep  force evaluations a step takes (the accepted state's included),
+//   evaluationsPerStep  force evaluations a step takes (the accepted state's included; 1: the
+//                       trial state's rates are taken as the accepted state's, not evaluated),
 //   advance(step, dt)   one step: updates of the trial state y* from y and the rates, through
 //                       step.move(update, trialStage or finalStage), and evaluations of y*, through
 //                       step.evaluate().
