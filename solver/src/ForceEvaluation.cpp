@@ -31,6 +31,12 @@ terms::Flops flopsOf(unsigned index, std::integer_sequence<unsigned, Mask...>) {
   return flops;
 }
 
+// Bit k: the k-th optional term of terms::OptionalTerms.
+unsigned optionalBits(TermSwitches t) {
+  return unsigned(t.artificialViscosity) | unsigned(t.morrisViscosity) << 1 |
+         unsigned(t.variableH) << 2;
+}
+
 }  // namespace
 
 terms::Flops pairFlops(TermSwitches t) {
@@ -38,8 +44,7 @@ terms::Flops pairFlops(TermSwitches t) {
 }
 
 unsigned menuIndex(TermSwitches t) {
-  const unsigned optional = unsigned(t.artificialViscosity) | unsigned(t.morrisViscosity) << 1 |
-                            unsigned(t.variableH) << 2;
+  const unsigned optional = optionalBits(t);
   const auto form = static_cast<unsigned>(t.densityDiffusion);
   if (form > terms::DensityDiffusionForms::size)
     throw std::invalid_argument("menuIndex: density diffusion form " + std::to_string(form) +
@@ -52,9 +57,7 @@ unsigned menuIndex(TermSwitches t) {
 }
 
 bool onMenu(TermSwitches t) {
-  return !t.concentrationGradient ||
-         (unsigned(t.artificialViscosity) | unsigned(t.morrisViscosity) << 1 |
-          unsigned(t.variableH) << 2) == terms::shiftingSubset;
+  return !t.concentrationGradient || optionalBits(t) == terms::shiftingSubset;
 }
 
 template <int D>

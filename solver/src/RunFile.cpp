@@ -257,6 +257,19 @@ hid_t seriesColumn(hid_t g, const SeriesColumn& c, hid_t type, const std::string
   return d;
 }
 
+// Rows [old, old + add) of the one-dimensional dataset `d` (at `where` in the file at `path`),
+// extended to hold them, written from `rows` of the memory type `type`.
+void appendRows(hid_t d, hid_t type, hsize_t old, hsize_t add, const void* rows,
+                const std::string& path, const std::string& where) {
+  hsize_t total = old + add;
+  check(H5Dset_extent(d, &total), path, "extending " + where);
+  Handle file(H5Dget_space(d), H5Sclose, path, "the extent of " + where);
+  check(H5Sselect_hyperslab(file, H5S_SELECT_SET, &old, nullptr, &add, nullptr), path,
+        "selecting in " + where);
+  Handle mem(H5Screate_simple(1, &add, nullptr), H5Sclose, path, "a dataspace");
+  check(H5Dwrite(d, type, mem, file, H5P_DEFAULT, rows), path, where);
+}
+
 }  // namespace
 
 void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
@@ -274,22 +287,16 @@ void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
       hsize_t old = 0;
       if (H5Sget_simple_extent_dims(space, &old, nullptr) < 0)
         hdf5::fail(writing_, "the extent of " + where);
-      hsize_t add = c.values.size(), total = old + add;
+      const hsize_t add = c.values.size();
       if (add > 0) {
-        check(H5Dset_extent(d, &total), writing_, "extending " + where);
-        Handle file(H5Dget_space(d), H5Sclose, writing_, "the extent of " + where);
-        check(H5Sselect_hyperslab(file, H5S_SELECT_SET, &old, nullptr, &add, nullptr), writing_,
-              "selecting in " + where);
-        Handle mem(H5Screate_simple(1, &add, nullptr), H5Sclose, writing_, "a dataspace");
         if (isStep) {
           std::vector<std::int64_t> v(c.values.begin(), c.values.end());
-          check(H5Dwrite(d, H5T_NATIVE_INT64, mem, file, H5P_DEFAULT, v.data()), writing_, where);
+          appendRows(d, type, old, add, v.data(), writing_, where);
         } else if (isLimiter) {
           std::vector<std::int32_t> w(c.values.begin(), c.values.end());
-          check(H5Dwrite(d, H5T_NATIVE_INT32, mem, file, H5P_DEFAULT, w.data()), writing_, where);
+          appendRows(d, type, old, add, w.data(), writing_, where);
         } else {
-          check(H5Dwrite(d, H5T_NATIVE_DOUBLE, mem, file, H5P_DEFAULT, c.values.data()), writing_,
-                where);
+          appendRows(d, type, old, add, c.values.data(), writing_, where);
         }
       }
       c.values.clear();
@@ -496,15 +503,10 @@ void RunFile::adoptRecordSegments(const std::vector<std::int64_t>& from,
           throw OutputError(path + ": " + where + " continues row " + std::to_string(rowsFrom) +
                             " but the record has " + std::to_string(old));
         Handle type(H5Dget_type(d), H5Tclose, path, "the type of " + where);
-        hsize_t add = rowsOf(d, path, where), total = old + add;
+        const hsize_t add = rowsOf(d, path, where);
         if (add == 0) continue;
         const std::vector<char> bytes = readRows(d, type, 0, add, path, where);
-        check(H5Dset_extent(target, &total), writing_, "extending " + where);
-        Handle file(H5Dget_space(target), H5Sclose, writing_, "the extent of " + where);
-        check(H5Sselect_hyperslab(file, H5S_SELECT_SET, &old, nullptr, &add, nullptr), writing_,
-              "selecting in " + where);
-        Handle mem(H5Screate_simple(1, &add, nullptr), H5Sclose, writing_, "a dataspace");
-        check(H5Dwrite(target, type, mem, file, H5P_DEFAULT, bytes.data()), writing_, where);
+        appendRows(target, type, old, add, bytes.data(), writing_, where);
       }
     }
   });

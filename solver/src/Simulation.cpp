@@ -140,7 +140,7 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
                            std::to_string(static_cast<int>(scene.integrator)));
   if (scene.shifting.form != ShiftingForm::none)
     shifting_ = std::make_unique<ParticleShifting<D>>(scene.kernel, scene.shifting, scene.dx);
-  shiftingSums_ = termsOf(scene).concentrationGradient;
+  shiftingSums_ = forces_.terms().concentrationGradient;
   id_.resize(y_.size());
   std::iota(id_.begin(), id_.end(), 0);
   for (std::size_t i = 0; i < y_.size(); ++i)

@@ -50,7 +50,7 @@ BASE = dict(c0=24.4, beta=1.0, variable_h="true", kernel="quadratic", dx=0.02, h
             cfl=0.25, cfl_force=0.25, end_time=0.8, p0=0.0, initial="lattice", packing="",
             integrator="predictor_corrector", delta=0.0)
 # The time integrators (solver/SCENES.md, [numerics] integrator): the paper's first.
-INTEGRATORS = ["predictor_corrector", "position_verlet"]
+INTEGRATORS = ["predictor_corrector", "position_verlet", "velocity_verlet"]
 
 
 def template_scene(template: str, **params) -> dict:
@@ -183,7 +183,7 @@ def run_point(sph, template, params, workdir, drop_tool=None):
     p = dict(BASE, **params)
     # Short words where the full ones would pass the 100 characters a scene name may have.
     short = {"integrator": "", "end_time": "T", "h_over_dx": "hdx", "predictor_corrector": "pc",
-             "position_verlet": "pv"}
+             "position_verlet": "pv", "velocity_verlet": "vv"}
     name = template + "_" + "_".join(f"{short.get(k, k)}{short.get(v, v) if isinstance(v, str) else v}"
                                      for k, v in sorted(params.items()) if k != "packing")
     p["name"] = name

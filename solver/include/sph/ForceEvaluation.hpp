@@ -95,6 +95,7 @@ class ForceEvaluation {
   // Names of the terms the chosen loop evaluates, for the run file.
   std::vector<std::string> termNames() const;
   KernelKind kernel() const { return kernel_; }
+  const TermSwitches& terms() const { return terms_; }
 
   struct Workspace;  // cell list and cell-sorted copies, kept between calls (no allocation per
                      // step)
