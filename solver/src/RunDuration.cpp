@@ -3,14 +3,19 @@
 #include <sys/statvfs.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "sph/InitialParticles.hpp"
 #include "sph/RunBudget.hpp"
 #include "sph/Simulation.hpp"
+#include "sph/integrators/PositionVerlet.hpp"
+#include "sph/integrators/PredictorCorrector.hpp"
+#include "sph/integrators/VelocityVerlet.hpp"
 
 namespace sph {
 
@@ -25,6 +30,7 @@ struct FirstStep {
   int fastest = -1;  // the particle of the largest |a|
   int phaseC = 0, phaseNu = 0;
   double acoustic = 0, viscous = 0, accel = 0;
+  double entries = 0, evaluationSeconds = 0;
 };
 
 template <int D>
@@ -34,8 +40,14 @@ FirstStep firstStep(const Scene& scene) {
   Simulation<D> sim(lattice, latticeParticles<D>(lattice));
   Derivatives<D> f;
   sim.rates(sim.particles(), 0.0, f);
-  const Particles<D>& y = sim.particles();
   FirstStep s;
+  // Again, timed: the lists and the set are built, as at most of a run's evaluations.
+  const auto start = std::chrono::steady_clock::now();
+  sim.rates(sim.particles(), 0.0, f);
+  s.evaluationSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  s.entries = static_cast<double>(sim.interactionSet().size());
+  const Particles<D>& y = sim.particles();
   s.h = *std::min_element(y.h.begin(), y.h.end());
   for (std::size_t i = 0; i < y.size(); ++i) {
     s.v = std::max(s.v, y.v[i].norm());
@@ -53,6 +65,20 @@ FirstStep firstStep(const Scene& scene) {
   s.viscous = s.nu > 0 ? scene.cflViscous * s.h * s.h / s.nu : 1e300;
   s.accel = s.a > 0 ? scene.cflForce * std::sqrt(s.h / s.a) : 1e300;
   return s;
+}
+
+int evaluationsPerStep(TimeIntegrator i) {
+  switch (i) {
+    case TimeIntegrator::predictor_corrector:
+      return integrators::PredictorCorrector::evaluationsPerStep;
+    case TimeIntegrator::position_verlet:
+      return integrators::PositionVerlet::evaluationsPerStep;
+    case TimeIntegrator::velocity_verlet:
+      return integrators::VelocityVerlet::evaluationsPerStep;
+  }
+  // No default: -Wswitch names an enumerator missing above; any other value is a bug.
+  throw std::logic_error("evaluationsPerStep: unknown time integrator " +
+                         std::to_string(static_cast<int>(i)));
 }
 
 std::string phaseKey(int k, const char* key) {
@@ -130,6 +156,9 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
               : dt == f.viscous        ? "viscous"
                                        : "acceleration";
   e.steps = s.endTime / dt;
+  e.entries = f.entries, e.evaluationSeconds = f.evaluationSeconds;
+  e.evaluationsPerStep = evaluationsPerStep(s.integrator);
+  e.runSeconds = e.steps * e.evaluationsPerStep * e.evaluationSeconds;
   e.snapshots = s.snapshotInterval > 0 ? std::floor(s.endTime / s.snapshotInterval) + 2 : 2;
   const double columns = 9.0 + s.phases.size() + s.probes.size();  // Run.cpp's Series
   const double rows = e.steps / s.seriesEvery + e.snapshots;

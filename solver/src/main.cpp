@@ -226,7 +226,12 @@ int main(int argc, char** argv) {
                 << e.memory / 1048576.0 << " MiB of memory (" << e.available / 1048576.0
                 << " MiB available), " << e.steps << " steps (first dt " << e.firstDt << " s, "
                 << e.limiter << " limit), " << e.snapshots << " snapshots, "
-                << e.outputBytes / 1048576.0 << " MiB of output\n";
+                << e.outputBytes / 1048576.0 << " MiB of output\n"
+                << "  work: " << e.entries
+                << " entries in the interaction set at the start (fluid, ghosts, wall particles); "
+                << "a force evaluation " << e.evaluationSeconds << " s here now, so about "
+                << e.runSeconds << " s of force evaluations (" << e.evaluationsPerStep
+                << " a step)\n";
       return sph::exitDone;
     } catch (const std::exception& e) {
       return reportError(e);

@@ -6,6 +6,7 @@
 // ran for ever.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -129,6 +130,37 @@ TEST(RunBudget, MaxSteps) {
   EXPECT_NE(r.output.find("steps, more than 100 (sph check/run --max-steps)"), std::string::npos)
       << r.output;
   EXPECT_EQ(runSph("check '" + scenePath("small_tank.toml") + "' --max-steps 1000").exitCode, 0);
+}
+
+// The work counts what a particle costs: the SPHERIC case's wall particles within reach of the
+// water (the fuzz driver counted fluid particles times steps, so a 3-D run on wall particles that
+// took minutes passed its cap and was called a hang), and its integrator's evaluations a step.
+TEST(RunBudget, WorkCountsWallParticlesAndEvaluations) {
+  const std::string scene =
+      std::string(SPH_SOURCE_DIR) + "/validation/scenes/spheric_dam_break_dx0.08.toml";
+  const ProgramResult r = runSph("check '" + scene + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  double particles = 0, entries = 0, evaluation = 0, seconds = 0, steps = 0, perStep = 0;
+  const auto at = r.output.find("estimated: "), work = r.output.find("work: ");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  ASSERT_NE(work, std::string::npos) << r.output;
+  ASSERT_EQ(std::sscanf(r.output.c_str() + at, "estimated: %lf particles", &particles), 1);
+  const auto stepsAt = r.output.find(" steps (first dt", at);
+  ASSERT_NE(stepsAt, std::string::npos) << r.output;
+  steps = std::stod(r.output.substr(r.output.rfind(' ', stepsAt - 1) + 1));
+  ASSERT_EQ(std::sscanf(r.output.c_str() + work,
+                        "work: %lf entries in the interaction set at the start (fluid, ghosts, "
+                        "wall particles); a force evaluation %lf s here now, so about %lf s of "
+                        "force evaluations (%lf a step)",
+                        &entries, &evaluation, &seconds, &perStep),
+            4)
+      << r.output;
+  // 1,360 fluid particles at dx 0.08 and the wall particles within reach of them (4,220).
+  EXPECT_GT(entries, 2 * particles) << r.output;
+  EXPECT_EQ(perStep, 2) << "the paper's predictor-corrector";
+  EXPECT_GT(evaluation, 0);
+  // (each printed to 3 digits)
+  EXPECT_NEAR(seconds, steps * perStep * evaluation, 0.02 * seconds) << r.output;
 }
 
 TEST(RunBudget, HOverDxOutsideItsRange) {

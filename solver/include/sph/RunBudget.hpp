@@ -29,6 +29,12 @@ struct RunEstimate {
   double firstDt = 0.0;           // s, the first step's stable dt (Morris et al. 1997)
   std::string limiter;            // acoustic, viscous or acceleration
   double steps = 0.0, snapshots = 0.0, outputBytes = 0.0;
+  // The work: the interaction set's entries at the start (fluid, ghosts and the wall particles
+  // within reach of it), the wall time of one force evaluation of the start with its lists built
+  // (on this machine, now, on the threads OpenMP gives), and that times the evaluations of all
+  // the steps (the integrator's a step): what the run spends, less its output, list builds and
+  // the load's changes.
+  double entries = 0.0, evaluationSeconds = 0.0, evaluationsPerStep = 0.0, runSeconds = 0.0;
 };
 
 // Peak memory of a run, measured (peak RSS of `sph run`, 2026-12-01, this machine): 650-710 B a
@@ -53,8 +59,9 @@ double estimateParticles(const Scene& scene);
 RunEstimate checkMemory(const Scene& scene, const RunLimits& limits);
 
 // The first step, from the lattice start's first force evaluation (done here, on a simulation of
-// its own that is freed before the run builds its own): the number of steps, snapshots and bytes
-// of output. Throws SceneError naming the keys where one passes its limit. Call checkMemory first.
+// its own that is freed before the run builds its own; a second one is timed): the number of
+// steps, snapshots and bytes of output, and the work. Throws SceneError naming the keys where one
+// passes its limit. Call checkMemory first.
 void checkDuration(const Scene& scene, const RunLimits& limits, RunEstimate& estimate);
 
 }  // namespace sph
