@@ -63,7 +63,11 @@ class FixedWalls {
   // from eqs. (22)-(28) over those entries (whose pressure `set` already holds). Only those
   // within `reach` (a pair's support plus the skin) of a fluid entry are written (set.walls), the
   // others counted in set.leftOut: chosen anew with HaloMembers::rescan, kept with ::same (the
-  // same entries in the same places, for neighbour lists that are reused).
+  // same entries in the same places, for neighbour lists that are reused). With them, each one's
+  // fluid within its support plus half the skin (reach - 2 h_max of the fluid) is listed
+  // (set.wallNeighbours) and the lists kept: the fluid moves less than half the skin while the
+  // pair loop keeps its lists. A kept list sums its fluid in the order of the build, a new one
+  // in the order of the cells now.
   void append(InteractionSet<D>& set, double reach, HaloMembers members) const;
 
   const std::vector<Vec<D>>& positions() const { return x_; }
@@ -89,6 +93,10 @@ class FixedWalls {
   mutable CellList<D> fluidCells_;  // the fluid in cells, for choosing the wall particles in a set
   Vec<D> lo_, hi_;                  // the wall particles' box
   void choose(InteractionSet<D>& set, double reach) const;
+  // The chosen wall particles' lists from the fluid in cells, then their state.
+  void sumAndList(InteractionSet<D>& set, std::size_t base, double reach) const;
+  // Their state, eqs. (22)-(28), from the fluid of their lists, into set entries base + q.
+  void sumListed(InteractionSet<D>& set, std::size_t base) const;
   void frameTheWalls();
 };
 

@@ -45,6 +45,11 @@ struct InteractionSet {
     Vec<D> lo = Vec<D>::Constant(1e300), hi = Vec<D>::Constant(-1e300);
     double h = 0.0;
   } leftOut;
+  // The fluid entries near each of `walls`, listed when they are chosen and kept with them: those
+  // within the wall particle's support plus half the skin, in the order its sums take them
+  // (FixedWalls.hpp). List q is wallNeighbours[wallNeighboursAt[q] .. wallNeighboursAt[q + 1]).
+  std::vector<std::int32_t> wallNeighbours;
+  std::vector<std::size_t> wallNeighboursAt;
 
   std::size_t size() const { return x.size(); }
   // Where the fluid and its halo end: entries appended after them (fixed wall particles) begin.
@@ -53,7 +58,10 @@ struct InteractionSet {
     for (const auto& h : halo) n += h.size();
     return n;
   }
-  void clear() { resize(0), walls.clear(), leftOut = {}; }
+  void clear() {
+    resize(0), walls.clear(), leftOut = {};
+    wallNeighbours.clear(), wallNeighboursAt.clear();
+  }
   void resize(std::size_t n) {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
     source.resize(n);
