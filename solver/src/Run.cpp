@@ -276,12 +276,14 @@ int run(const Scene& scene, const RunOptions& opt) {
 
   Series series(scene);
   long recorded = -1, snapshotted = -1;  // the steps last recorded and written
+  InteractionSet<D> stateSet;            // the probes' set where the last evaluation's is not
   auto record = [&] {
     if (domain) whole.gather(sim, withSet);
     if (writer)
       series.record(sim.time(), sim.lastDt(), sim.step(), int(sim.lastLimit()),
                     domain ? diagnose<D>(scene, whole.particles, whole.set)
-                           : diagnose<D>(scene, sim.particles(), sim.interactionSet()));
+                           : diagnose<D>(scene, sim.particles(),
+                                         withSet ? sim.stateSet(stateSet) : sim.interactionSet()));
     recorded = sim.step();
   };
   auto snapshot = [&](bool lastGood) {
@@ -511,18 +513,13 @@ int run(const Scene& scene, const RunOptions& opt) {
 
 int runScene(const Scene& scene, const RunOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
-  // Particle shifting's sums are not split over processes yet, nor do velocity Verlet's carried
-  // rates migrate with their particles (solver/src/mpi/DESIGN-MPI.md).
-  const int processes = launchedProcesses();
-  auto oneProcess = [&](const std::string& what) {
-    throw std::invalid_argument(scene.file + ": a scene with " + what +
-                                " runs as one process, not as the " + std::to_string(processes) +
-                                " processes it was launched as (mpirun -n " +
-                                std::to_string(processes) + ")");
-  };
-  if (processes > 1 && scene.shifting.form != ShiftingForm::none) oneProcess("particle shifting");
-  if (processes > 1 && scene.integrator == TimeIntegrator::velocity_verlet)
-    oneProcess("integrator = \"velocity_verlet\"");
+  // Particle shifting's sums are not split over processes yet (solver/src/mpi/DESIGN-MPI.md).
+  if (const int n = launchedProcesses(); n > 1 && scene.shifting.form != ShiftingForm::none)
+    throw std::invalid_argument(scene.file +
+                                ": a scene with particle shifting runs as one process, "
+                                "not as the " +
+                                std::to_string(n) + " processes it was launched as (mpirun -n " +
+                                std::to_string(n) + ")");
   RunLimits limits = options.limits;
   limits.outDir = options.outDir;
   RunEstimate estimate = checkMemory(scene, limits);

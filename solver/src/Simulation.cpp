@@ -219,6 +219,29 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   if (domain_ && !reuse && &state == &y_) {
     domain_->migrate(y_, id_, key_);
     n = static_cast<std::int64_t>(y_.size());
+  } else if (domain_ && !reuse && !ratesOfState_ && &state == &yStar_) {
+    // No accepted state is evaluated (VelocityVerlet.hpp): the trial state goes, and y and the
+    // rates carried to this step ride along (the same particles, index by index).
+    constexpr int width = 3 * D + 5;
+    std::vector<double> riders(static_cast<std::size_t>(n) * width);
+    forEachInShares(n, [&](std::int64_t i) {
+      double* row = riders.data() + i * width;
+      for (int a = 0; a < D; ++a)
+        row[a] = y_.r[i][a], row[D + a] = y_.v[i][a], row[2 * D + a] = f_.dvdt[i][a];
+      row[3 * D] = y_.rho[i], row[3 * D + 1] = y_.h[i], row[3 * D + 2] = y_.p[i];
+      row[3 * D + 3] = f_.drhodt[i], row[3 * D + 4] = f_.dhdt[i];
+    });
+    domain_->migrate(yStar_, id_, key_, &riders, width);
+    n = static_cast<std::int64_t>(yStar_.size());
+    y_.resize(n), f_.resize(n);
+    forEachInShares(n, [&](std::int64_t i) {
+      const double* row = riders.data() + i * width;
+      for (int a = 0; a < D; ++a)
+        y_.r[i][a] = row[a], y_.v[i][a] = row[D + a], f_.dvdt[i][a] = row[2 * D + a];
+      y_.rho[i] = row[3 * D], y_.h[i] = row[3 * D + 1], y_.p[i] = row[3 * D + 2];
+      f_.drhodt[i] = row[3 * D + 3], f_.dhdt[i] = row[3 * D + 4];
+      y_.m[i] = yStar_.m[i], y_.phase[i] = yStar_.phase[i];
+    });
   }
   if (!reuse && skinned) {
     skin_ = skinFraction_ * 2.0 * hMax;
@@ -277,6 +300,13 @@ void Simulation<D>::wholeSet(const Particles<D>& all, InteractionSet<D>& set) co
   double hMax = 0;
   for (double h : all.h) hMax = std::max(hMax, h);
   buildSet(all, 2.0 * hMax + skin_, HaloMembers::rescan, set);
+}
+
+template <int D>
+const InteractionSet<D>& Simulation<D>::stateSet(InteractionSet<D>& scratch) const {
+  if (ratesOfState_) return set_;
+  wholeSet(y_, scratch);
+  return scratch;
 }
 
 template <int D>
@@ -339,10 +369,6 @@ void Simulation<D>::distribute(std::shared_ptr<DomainDecomposition<D>> d) {
   if (source_) throw std::logic_error("Simulation::distribute: a source runs in one process");
   // (the shifts are summed over the set's fluid entries, owned and halo alike: not yet split)
   if (shifting_) throw std::logic_error("Simulation::distribute: shifting runs in one process");
-  // (the rates a step carries to the next would have to migrate with their particles)
-  if (!ratesOfState_)
-    throw std::logic_error("Simulation::distribute: " + std::string(name(scene_.integrator)) +
-                           " runs in one process");
   domain_ = std::move(d);
   if (!domain_) return;
   key_.resize(y_.size());
@@ -582,8 +608,8 @@ template <int D>
 struct Simulation<D>::Stepper {
   Simulation& sim;
   const double dt;
-  const std::int64_t count;
-  const bool parallel;
+  std::int64_t count;  // the particles of this process (an evaluation may migrate some)
+  bool parallel;
   const BoxFaces<D> box;  // by value (see BoxFaces)
   Motion motion;          // of y* in its last stage
   std::optional<Failure> failure;
@@ -611,8 +637,11 @@ struct Simulation<D>::Stepper {
   }
   // f(y*) at t + `after` (sized by the evaluation), and with particle shifting the shifts the
   // final stage adds, from the interaction set of y* (the step's trial state) just built.
+  // Over several processes with velocity Verlet, particles may move to other processes on the
+  // way (rates()): state(), rates() and trial() are to be taken again after it.
   void evaluate(double after) {
     sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion, sim.shiftingSums_);
+    count = static_cast<std::int64_t>(sim.y_.size()), parallel = count >= parallelFrom();
     if (sim.shiftingSums_)
       (*sim.shifting_)(sim.set_, dt, sim.fStar_, sim.forces_, sim.shift_);
     else if (sim.shifting_)

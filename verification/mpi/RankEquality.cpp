@@ -1,4 +1,5 @@
-// rank_equality SCENE STEPS: STEPS steps of SCENE over every rank of MPI_COMM_WORLD (slabs,
+// rank_equality SCENE STEPS [INTEGRATOR]: STEPS steps of SCENE (with [numerics] integrator =
+// INTEGRATOR if given) over every rank of MPI_COMM_WORLD (slabs,
 // sph/DomainDecomposition.hpp) and, on rank 0, in one process; exit 0 when the two final states
 // are the same to the bit (every field of every particle, in the one process's storage order,
 // and the particles' ids), 1 naming the first difference, 2 on bad arguments.
@@ -7,8 +8,10 @@
 #include <mpi.h>
 
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "sph/DomainDecomposition.hpp"
@@ -19,7 +22,7 @@ namespace {
 
 using namespace sph;
 
-Scene channel() {
+std::string channel() {
   std::ostringstream s;
   s << "name = \"channel\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [0.3, 0.1]\n"
     << "x_lower = \"periodic\"\nx_upper = \"periodic\"\ny_lower = \"no_slip\"\n"
@@ -27,7 +30,23 @@ Scene channel() {
     << "p0 = 100.0\n[[fluid]]\nlower = [0.0, 0.0]\nupper = [0.3, 0.1]\n"
     << "[physics]\ngravity = [0.5, 0.0]\nartificial_viscosity = 0.0\nmorris_viscosity = true\n"
     << "variable_h = true\n[numerics]\ndx = 0.005\nend_time = 1.0\n";
-  return parseScene(s.str(), "channel");
+  return s.str();
+}
+
+// The scene's text with its [numerics] integrator set.
+std::string withIntegrator(std::string text, const std::string& integrator) {
+  const std::string table = "\n[numerics]\n";
+  const std::size_t at = text.find(table);
+  if (at == std::string::npos) throw std::invalid_argument("the scene has no [numerics] table");
+  return text.insert(at + table.size(), "integrator = \"" + integrator + "\"\n");
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("cannot read " + path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 // One process's run of `steps` steps (keepCellOrder as sph run keeps it: Run.cpp).
@@ -85,12 +104,14 @@ int compare(const Scene& scene, long steps) {
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   int code = 2;
-  if (argc != 3) {
-    std::cerr << "usage: rank_equality SCENE|channel STEPS\n";
+  if (argc != 3 && argc != 4) {
+    std::cerr << "usage: rank_equality SCENE|channel STEPS [INTEGRATOR]\n";
   } else {
     try {
       const std::string which = argv[1];
-      const Scene scene = which == "channel" ? channel() : readScene(which);
+      std::string text = which == "channel" ? channel() : readText(which);
+      if (argc == 4) text = withIntegrator(text, argv[3]);
+      const Scene scene = parseScene(text, which);
       const long steps = std::stol(argv[2]);
       code = scene.dimension == 2   ? compare<2>(scene, steps)
              : scene.dimension == 3 ? compare<3>(scene, steps)

@@ -1,5 +1,5 @@
 # cmake -DMPIEXEC=... -DSPH=... -DSCENE=... -DEND_TIME=T -DSTOP_AT=S -DWRITERS=a -DREADERS=b
-#       -DPYTHON=... -DCOMPARE=... -DWORK=... -P this
+#       -DPYTHON=... -DCOMPARE=... -DWORK=... [-DINTEGRATOR=...] -P this
 # A checkpoint written by `sph run` on WRITERS processes (stopped at STOP_AT) continues on READERS
 # processes (1: plain `sph run --restart`) to END_TIME, and the continued run file is the one an
 # uninterrupted one-process run writes, to the bit (perf/compare_runs.py): the checkpoint is one
@@ -8,6 +8,8 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(READ ${SCENE} text)
 string(REGEX REPLACE "\nend_time = [^\n]*" "\nend_time = ${END_TIME}" text "${text}")
+include(${CMAKE_CURRENT_LIST_DIR}/SceneIntegrator.cmake)
+sph_set_integrator(text "${INTEGRATOR}" ${SCENE})
 get_filename_component(name ${SCENE} NAME_WLE)  # the scene name
 file(WRITE ${WORK}/${name}.toml "${text}")
 function(sph processes)

@@ -1,12 +1,15 @@
 # cmake -DMPIEXEC=... -DSPH=... -DSCENE=... -DRANKS=N -DEND_TIME=T -DPYTHON=... -DCOMPARE=...
-#       -DWORK=... -P this
+#       -DWORK=... [-DINTEGRATOR=...] -P this
 # `mpirun -n N sph run SCENE` writes the run file one process writes, to the bit (every series,
 # snapshot and metric but the timings: perf/compare_runs.py), and nothing else: the same files
-# in its output directory. The scene is run to END_TIME (a copy of it with that end_time).
+# in its output directory. The scene is run to END_TIME (a copy of it with that end_time, and
+# with [numerics] integrator = INTEGRATOR if given).
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(READ ${SCENE} text)
 string(REGEX REPLACE "\nend_time = [^\n]*" "\nend_time = ${END_TIME}" text "${text}")
+include(${CMAKE_CURRENT_LIST_DIR}/SceneIntegrator.cmake)
+sph_set_integrator(text "${INTEGRATOR}" ${SCENE})
 get_filename_component(name ${SCENE} NAME)
 file(WRITE ${WORK}/${name} "${text}")
 execute_process(COMMAND ${SPH} run ${WORK}/${name} --out ${WORK}/one --threads 1

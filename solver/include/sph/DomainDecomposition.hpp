@@ -36,9 +36,10 @@ class DomainDecomposition {
   virtual void keepOwn(Particles<D>& particles, std::vector<int>& ids,
                        std::vector<std::int64_t>& keys) = 0;
   // Sends each owned particle whose position lies in another process's slab there, after
-  // cutting the slabs anew if the processes' counts have drifted apart.
-  virtual void migrate(Particles<D>& owned, std::vector<int>& ids,
-                       std::vector<std::int64_t>& keys) = 0;
+  // cutting the slabs anew if the processes' counts have drifted apart. `riders`: `width`
+  // numbers a particle (owned particle i's at i * width) that go where it goes.
+  virtual void migrate(Particles<D>& owned, std::vector<int>& ids, std::vector<std::int64_t>& keys,
+                       std::vector<double>* riders = nullptr, int width = 0) = 0;
   // The halo: the other processes' particles within `width` of this one's owned particles along
   // the cut axis (periodic there if the domain is). `rescan` chooses them anew; otherwise the
   // members of the last rescan, in their current state.

@@ -101,7 +101,11 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const Particles<D>& particles() const { return y_; }
   Particles<D>& particles() { return y_; }
+  // The set of the last evaluation (of a trial state with velocity Verlet).
   const InteractionSet<D>& interactionSet() const { return set_; }
+  // The set of the current state: the last evaluation's, or (where that was of a trial state,
+  // VelocityVerlet.hpp) one built from the state into `scratch`. One process.
+  const InteractionSet<D>& stateSet(InteractionSet<D>& scratch) const;
   double time() const { return t_; }
   long step() const { return step_; }
   double lastDt() const { return dt_; }

@@ -42,18 +42,25 @@ void unpack(const double* f, Particles<D>& s, std::size_t i, int& id, std::int64
   id = static_cast<int>(f[2 * D + 5]), key = static_cast<std::int64_t>(f[2 * D + 6]);
 }
 
-// The particles received, in key order.
+// The particles received, in key order; each packed with `width` riders after its fields, which
+// go to `riders` (particle k's at k * width).
 template <int D>
 void unpackSorted(const std::vector<double>& in, Particles<D>& s, std::vector<int>& ids,
-                  std::vector<std::int64_t>& keys) {
-  constexpr int F = fieldsPerParticle<D>;
+                  std::vector<std::int64_t>& keys, std::vector<double>* riders = nullptr,
+                  int width = 0) {
+  constexpr int P = fieldsPerParticle<D>;
+  const int F = P + width;
   const std::size_t n = in.size() / F;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
-  auto keyOf = [&](std::size_t k) { return in[k * F + F - 1]; };
+  auto keyOf = [&](std::size_t k) { return in[k * F + P - 1]; };
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return keyOf(a) < keyOf(b); });
   s.resize(n), ids.resize(n), keys.resize(n);
   for (std::size_t k = 0; k < n; ++k) unpack(in.data() + order[k] * F, s, k, ids[k], keys[k]);
+  if (!riders) return;
+  riders->resize(n * width);
+  for (std::size_t k = 0; k < n; ++k)
+    std::copy_n(in.data() + order[k] * F + P, width, riders->data() + k * width);
 }
 
 template <int D>
@@ -105,8 +112,8 @@ class SlabDecomposition final : public DomainDecomposition<D> {
     all = std::move(own), ids = std::move(ownIds), keys = std::move(ownKeys);
   }
 
-  void migrate(Particles<D>& owned, std::vector<int>& ids,
-               std::vector<std::int64_t>& keys) override {
+  void migrate(Particles<D>& owned, std::vector<int>& ids, std::vector<std::int64_t>& keys,
+               std::vector<double>* riders = nullptr, int width = 0) override {
     // New cuts when the largest slab holds 10 % more than the mean (the step waits for it).
     const double began = MPI_Wtime();
     const std::int64_t mine = static_cast<std::int64_t>(owned.size());
@@ -116,12 +123,18 @@ class SlabDecomposition final : public DomainDecomposition<D> {
     if (largest * ranks_ > total * 11 / 10) cutAcross(owned), ++traffic_.rebalances;
     std::vector<std::vector<double>> out(ranks_);
     std::vector<std::size_t> stay;
+    if (!riders) width = 0;
+    auto packWith = [&](std::size_t i, std::vector<double>& to) {
+      pack(owned, i, ids[i], keys[i], to);
+      if (width > 0)
+        to.insert(to.end(), riders->begin() + i * width, riders->begin() + (i + 1) * width);
+    };
     for (std::size_t i = 0; i < owned.size(); ++i) {
       const int k = owner(owned.r[i][axis_]);
       if (k == rank_)
         stay.push_back(i);
       else
-        pack(owned, i, ids[i], keys[i], out[k]);
+        packWith(i, out[k]);
     }
     traffic_.migrated += static_cast<std::int64_t>(owned.size() - stay.size());
     std::vector<double> in = exchange(out);
@@ -129,8 +142,8 @@ class SlabDecomposition final : public DomainDecomposition<D> {
       traffic_.migrationSeconds += MPI_Wtime() - began;
       return;
     }
-    for (std::size_t i : stay) pack(owned, i, ids[i], keys[i], in);
-    unpackSorted(in, owned, ids, keys);
+    for (std::size_t i : stay) packWith(i, in);
+    unpackSorted(in, owned, ids, keys, width > 0 ? riders : nullptr, width);
     traffic_.migrationSeconds += MPI_Wtime() - began;
   }
 

@@ -34,20 +34,26 @@ struct VelocityVerlet {
   // false: the final stage failed a check (the step says which); the state stays y.
   template <class Step>
   static bool advance(Step& step, double dt) {
+    const double half = 0.5 * dt;
+    {
+      const auto y = step.state();
+      const auto f = step.rates();
+      const auto s = step.trial();  // y*
+      step.move(
+          [=](std::int64_t i) __attribute__((always_inline)) {
+            s.r[i] = y.r[i] + dt * (y.v[i] + half * f.dvdt[i]);
+            s.v[i] = y.v[i] + dt * f.dvdt[i];
+            s.rho[i] = y.rho[i] + dt * f.drhodt[i];
+            s.h[i] = y.h[i] + dt * f.dhdt[i];
+            s.m[i] = y.m[i], s.phase[i] = y.phase[i];
+          },
+          trialStage);
+    }
+    step.evaluate(dt);  // f(y*) at t + dt: the rates the next step starts from
+    // (taken after it: over several processes it may have sent particles elsewhere, y and f too)
     const auto y = step.state();
     const auto f = step.rates();
-    const auto s = step.trial();  // y*, then y'
-    const double half = 0.5 * dt;
-    step.move(
-        [=](std::int64_t i) __attribute__((always_inline)) {
-          s.r[i] = y.r[i] + dt * (y.v[i] + half * f.dvdt[i]);
-          s.v[i] = y.v[i] + dt * f.dvdt[i];
-          s.rho[i] = y.rho[i] + dt * f.drhodt[i];
-          s.h[i] = y.h[i] + dt * f.dhdt[i];
-          s.m[i] = y.m[i], s.phase[i] = y.phase[i];
-        },
-        trialStage);
-    step.evaluate(dt);  // f(y*) at t + dt: the rates the next step starts from
+    const auto s = step.trial();  // y'
     const auto fs = step.trialRates();
     return step.move(
         [=](std::int64_t i) __attribute__((always_inline)) {

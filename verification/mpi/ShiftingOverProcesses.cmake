@@ -1,0 +1,26 @@
+# cmake -DMPIEXEC=... -DSPH=... -DSCENE=... -DWORK=... -P this
+# A scene with particle shifting (its sums are not split over processes: solver/src/mpi/DESIGN-MPI.md)
+# launched as two processes ends in exit 2 naming the file and what it has, before any output is
+# written.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(READ ${SCENE} text)
+string(REPLACE "\n[physics]\n" "\n[physics]\nshifting = \"lind\"\n" edited "${text}")
+if(edited STREQUAL text)
+  message(FATAL_ERROR "${SCENE} has no [physics] table to add shifting to")
+endif()
+file(WRITE ${WORK}/shifting.toml "${edited}")
+execute_process(COMMAND ${MPIEXEC} -n 2 --oversubscribe ${SPH} run ${WORK}/shifting.toml
+  --out ${WORK}/out --threads 1 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  message(FATAL_ERROR "mpirun -n 2 sph run with particle shifting: exit 0, expected a refusal")
+endif()
+string(FIND "${err}" "${WORK}/shifting.toml: a scene with particle shifting runs as one process" at)
+if(at LESS 0)
+  message(FATAL_ERROR "the refusal does not name the file and particle shifting:\n${err}")
+endif()
+file(GLOB written ${WORK}/out/*)
+if(written)
+  message(FATAL_ERROR "a refused run wrote ${written}")
+endif()
+message(STATUS "particle shifting: refused as two processes")
