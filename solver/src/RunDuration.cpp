@@ -41,7 +41,8 @@ FirstStep firstStep(const Scene& scene) {
   Derivatives<D> f;
   sim.rates(sim.particles(), 0.0, f);
   FirstStep s;
-  // Again, timed: the lists and the set are built, as at most of a run's evaluations.
+  // Again, timed: the neighbour lists of the first are kept (the state has not moved), as at
+  // most of a run's evaluations.
   const auto start = std::chrono::steady_clock::now();
   sim.rates(sim.particles(), 0.0, f);
   s.evaluationSeconds =
