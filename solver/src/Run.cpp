@@ -41,8 +41,19 @@ SnapshotFields fieldsOf(const Particles<D>& s, const std::vector<int>& ids) {
   const std::size_t n = s.size();
   f.position.assign(3 * n, 0.0), f.velocity.assign(3 * n, 0.0);
   f.density.resize(n), f.pressure.resize(n), f.h.resize(n), f.mass.resize(n), f.phase.resize(n);
+  // By ascending id: slot i holds id i until particles leave (then the ids say whose it is).
+  const int top = ids.empty() ? -1 : *std::max_element(ids.begin(), ids.end());
+  std::vector<int> slot(static_cast<std::size_t>(top + 1), -1);
+  for (std::size_t k = 0; k < n; ++k) slot[ids[k]] = 1;
+  const bool departed = static_cast<std::size_t>(top + 1) != n;
+  for (int id = 0, next = 0; id <= top; ++id)
+    if (slot[id] >= 0) slot[id] = next++;
+  if (departed) {
+    f.id.resize(n);
+    for (std::size_t k = 0; k < n; ++k) f.id[slot[ids[k]]] = ids[k];
+  }
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = ids[k];
+    const std::size_t i = slot[ids[k]];
     for (int a = 0; a < D; ++a)
       f.position[3 * i + a] = s.r[k][a], f.velocity[3 * i + a] = s.v[k][a];
     f.density[i] = s.rho[k], f.pressure[i] = s.p[k], f.h[i] = s.h[k], f.mass[i] = s.m[k];
@@ -80,16 +91,30 @@ class Series {
       if (p.scaleHeight > 0) c.numbers.push_back({"scale_height", p.scaleHeight});
       columns.push_back(c);
     }
+    if (scene.leaving == Scene::Leaving::removed)
+      columns.push_back({"departed_particles", {}, {}, {}});
     maxVariation.assign(scene.phases.size() + 1, 0.0);
   }
-  void record(double t, double dt, long step, int limiter, const Diagnostics& d) {
+  // `departed`: the volume of each phase that has left the run (Simulation::departedVolume),
+  // counted in the volume errors as if still there: they measure the fluid's compression.
+  void record(double t, double dt, long step, int limiter, const Diagnostics& d,
+              const std::vector<double>& departed, std::size_t departures) {
     if (volume0.empty()) volume0 = d.phaseVolume, total0 = d.volume;
-    std::vector<double> row{
-        t,          dt,       double(step), double(limiter),        d.kineticEnergy,
-        d.maxSpeed, d.rhoMin, d.rhoMax,     d.volume / total0 - 1.0};
+    double gone = 0;
+    for (const double v : departed) gone += v;
+    std::vector<double> row{t,
+                            dt,
+                            double(step),
+                            double(limiter),
+                            d.kineticEnergy,
+                            d.maxSpeed,
+                            d.rhoMin,
+                            d.rhoMax,
+                            (d.volume + gone) / total0 - 1.0};
     for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
-      row.push_back(volume0[k] > 0 ? d.phaseVolume[k] / volume0[k] - 1.0 : 0.0);
+      row.push_back(volume0[k] > 0 ? (d.phaseVolume[k] + departed[k]) / volume0[k] - 1.0 : 0.0);
     row.insert(row.end(), d.probes.begin(), d.probes.end());
+    if (row.size() < columns.size()) row.push_back(double(departures));
     for (std::size_t k = 0; k < columns.size(); ++k) columns[k].values.push_back(row[k]);
     maxVariation[0] = std::max(maxVariation[0], std::abs(row[8]));
     for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
@@ -99,6 +124,26 @@ class Series {
   std::vector<double> volume0, maxVariation;  // [0]: all fluid, [1 + k]: phase k
   double total0 = 0;
 };
+
+// /departures: each particle that left the run through an open face, as its last step left it.
+template <class Departure>
+void writeDepartures(RunFile& file, const std::vector<Departure>& departures) {
+  std::vector<double> id, step, time, mass, density, phase, r[3], v[3];
+  for (const Departure& d : departures) {
+    id.push_back(d.id), step.push_back(double(d.step)), time.push_back(d.time);
+    mass.push_back(d.m), density.push_back(d.rho), phase.push_back(d.phase);
+    for (int a = 0; a < 3; ++a) {
+      r[a].push_back(a < d.r.size() ? d.r[a] : 0.0);
+      v[a].push_back(a < d.v.size() ? d.v[a] : 0.0);
+    }
+  }
+  const std::string g = "/departures";
+  file.array(g, "id", id), file.array(g, "step", step), file.array(g, "time", time);
+  const char* axis[3] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) file.array(g, axis[a], r[a]);
+  for (int a = 0; a < 3; ++a) file.array(g, std::string("u") + axis[a], v[a]);
+  file.array(g, "mass", mass), file.array(g, "density", density), file.array(g, "phase", phase);
+}
 
 // /packing/block_<k>: the packing history of a block with initial = "packed" (issue 6), and a
 // warning when it stopped on max_iterations instead of the kinetic-energy criterion.
@@ -283,7 +328,8 @@ int run(const Scene& scene, const RunOptions& opt) {
       series.record(sim.time(), sim.lastDt(), sim.step(), int(sim.lastLimit()),
                     domain ? diagnose<D>(scene, whole.particles, whole.set)
                            : diagnose<D>(scene, sim.particles(),
-                                         withSet ? sim.stateSet(stateSet) : sim.interactionSet()));
+                                         withSet ? sim.stateSet(stateSet) : sim.interactionSet()),
+                    sim.departedVolume(), sim.departures().size());
     recorded = sim.step();
   };
   auto snapshot = [&](bool lastGood) {
@@ -363,6 +409,7 @@ int run(const Scene& scene, const RunOptions& opt) {
   std::optional<Failure> failure;
   int interrupted = 0;   // the signal that stopped the run (Interrupt.hpp)
   bool stopped = false;  // at --stop-at
+  bool emptied = false;  // every particle has left through an open face
   while (sim.time() < scene.endTime * (1 - 1e-12)) {
     if (opt.stopAt > 0 && sim.time() >= opt.stopAt) {
       stopped = true;
@@ -383,6 +430,11 @@ int run(const Scene& scene, const RunOptions& opt) {
     const auto stepEnd = clock::now();
     tuner.took(since(stepStart, stepEnd));
     if (failure) break;
+    if (scene.leaving == Scene::Leaving::removed &&
+        whole.sum(static_cast<std::int64_t>(sim.particles().size())) == 0) {
+      emptied = true;  // nothing is left to move
+      break;
+    }
     remaining.observe(since(start, stepEnd), sim.time(), sim.step());
     const bool atSnapshot = sim.time() >= nextSnapshot * (1 - 1e-12);
     if (atSnapshot || sim.step() % scene.seriesEvery == 0) record();
@@ -442,11 +494,14 @@ int run(const Scene& scene, const RunOptions& opt) {
     out->attribute("status", std::string("stable"));
     out->attribute("failure_cause", std::string());
     out->attribute("failure", std::string());
+    // (the run ends early, at sim.time(), with nothing left to record or snapshot)
+    if (emptied) out->attribute("ended_by", std::string("every particle left the domain"));
     out->appendSeries(series.columns);
   }
   if (!out)
     return failure ? exitNumericalFailure : interrupted ? exitInterrupted + interrupted : exitDone;
   RunFile& file = *out;
+  if (scene.leaving == Scene::Leaving::removed) writeDepartures(file, sim.departures());
   const std::string m = "/metrics";
   file.attribute("wall_time_s", wall, m);
   file.attribute("steps", std::int64_t(sim.step()), m);
@@ -456,6 +511,8 @@ int run(const Scene& scene, const RunOptions& opt) {
   file.attribute("kept_neighbour_lists", std::int64_t(sim.reusedNeighbourLists()), m);
   file.attribute("steps_on_all_threads", onAll, m);  // the rest on one (ThreadTuner)
   file.attribute("wall_reflections", reflections, m);
+  if (scene.leaving == Scene::Leaving::removed)
+    file.attribute("departed_particles", std::int64_t(sim.departures().size()), m);
   file.attribute("particle_evaluations_per_s", double(sim.forceEvaluations()) * particles / wall,
                  m);
   file.attribute("max_volume_variation", series.maxVariation[0], m);
@@ -476,6 +533,9 @@ int run(const Scene& scene, const RunOptions& opt) {
     for (std::size_t k = 0; k < scene.phases.size(); ++k)
       std::printf("   %s %.4f %%", scene.phases[k].name.c_str(), 100 * series.maxVariation[k + 1]);
     std::printf("\n  wall reflections %lld\n", static_cast<long long>(reflections));
+    if (scene.leaving == Scene::Leaving::removed)
+      std::printf("  %zu particles left through open faces%s\n", sim.departures().size(),
+                  emptied ? " (all: the run ends here)" : "");
     std::printf("  force evaluations %ld, %.0f %% with the neighbour lists kept\n",
                 sim.forceEvaluations(),
                 100.0 * sim.reusedNeighbourLists() / std::max(1L, sim.forceEvaluations()));

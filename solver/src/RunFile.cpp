@@ -307,7 +307,7 @@ void RunFile::appendSeries(std::vector<SeriesColumn>& columns) {
 void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, bool lastGood) {
   const double bytes = 8.0 * (f.position.size() + f.velocity.size() + f.density.size() +
                               f.pressure.size() + f.h.size() + f.mass.size()) +
-                       4.0 * f.phase.size();
+                       4.0 * (f.phase.size() + f.id.size());
   ensureRoom(bytes);
   char name[32];
   std::snprintf(name, sizeof name, "/snapshots/%05zu", snapshots_.size());
@@ -320,6 +320,7 @@ void RunFile::snapshot(double time, std::int64_t step, const SnapshotFields& f, 
     writeArray(g, "h", H5T_NATIVE_DOUBLE, f.h, 1, writing_);
     writeArray(g, "mass", H5T_NATIVE_DOUBLE, f.mass, 1, writing_);
     writeArray(g, "phase", H5T_NATIVE_INT32, f.phase, 1, writing_);
+    if (!f.id.empty()) writeArray(g, "id", H5T_NATIVE_INT32, f.id, 1, writing_);
     writeAttribute(g, "time", H5T_NATIVE_DOUBLE, &time, writing_);
     writeAttribute(g, "step", H5T_NATIVE_INT64, &step, writing_);
     const std::int64_t one = 1;

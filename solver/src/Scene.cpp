@@ -68,7 +68,8 @@ FaceKind faceKind(SceneTable& t, const std::string& key, const std::string& valu
 
 void readDomain(SceneTable domain, Scene& s) {
   const int D = s.dimension;
-  std::vector<std::string> keys{"lower", "upper", "ghost_pressure", "wall_velocity"}, faces;
+  std::vector<std::string> keys{"lower", "upper", "ghost_pressure", "wall_velocity", "leaving"},
+      faces;
   for (int a = 0; a < D; ++a)
     for (const char* side : {"_lower", "_upper"}) faces.push_back(axisName[a] + std::string(side));
   keys.insert(keys.end(), faces.begin(), faces.end());
@@ -99,6 +100,16 @@ void readDomain(SceneTable domain, Scene& s) {
   if (ghost != "mirror" && ghost != "hydrostatic")
     domain.fail("ghost_pressure", "expected \"mirror\" or \"hydrostatic\", got '" + ghost + "'");
   s.hydrostaticGhosts = ghost == "hydrostatic";
+  const std::string leaving = domain.string("leaving", "fail");
+  if (leaving != "fail" && leaving != "remove")
+    domain.fail("leaving", "expected \"fail\" or \"remove\", got '" + leaving + "'");
+  s.leaving = leaving == "remove" ? Scene::Leaving::removed : Scene::Leaving::fails;
+  bool anyOpen = false;
+  for (int a = 0; a < D; ++a)
+    anyOpen |= s.faces[a][0] == FaceKind::open || s.faces[a][1] == FaceKind::open;
+  if (s.leaving == Scene::Leaving::removed && !anyOpen)
+    domain.fail("leaving",
+                "\"remove\" needs an open face to leave through; every face is a wall or periodic");
   velocity.rejectUnknown();
   domain.rejectUnknown();
 }

@@ -58,6 +58,11 @@ Failure decodeFailure(const std::string& text) {
 }
 
 namespace {
+// Whether a particle beyond a face of kind k leaves the run (removeDeparted) rather than fails.
+bool leavesThrough(const Scene& scene, FaceKind k) {
+  return k == FaceKind::open && scene.leaving == Scene::Leaving::removed;
+}
+
 template <int D>
 Boundaries<D> boundariesOf(const Scene& s) {
   Boundaries<D> b;
@@ -206,14 +211,20 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   // processes, the motion and h_max are the whole domain's, so that every process decides as one
   // would.
   const bool skinned = skinFraction_ > 0;
-  bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n;
+  bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n &&
+              !departedSinceListed_;
   double hMax = motion.hMax, moved2 = motion.moved2, grown = motion.grown;
   if (domain_) {
     double v[4] = {hMax, moved2, grown, kept ? 0.0 : 1.0};
     domain_->maxAll(v, 4);
     hMax = v[0], moved2 = v[1], grown = v[2], kept = v[3] == 0.0;
   }
+  if (hMax == 0.0) {  // no particle is left anywhere (every one has departed): nothing acts
+    out.resize(static_cast<std::size_t>(n));
+    return;
+  }
   const bool reuse = kept && 2.0 * std::sqrt(moved2) + 2.0 * grown < skin_;
+  if (!reuse) departedSinceListed_ = false;
   // New lists at an accepted state: the particles that left the slab go to its owner (in the
   // middle of a step y and y* keep the same particles).
   if (domain_ && !reuse && &state == &y_) {
@@ -476,7 +487,7 @@ std::optional<Failure> Simulation<D>::checkParticle(const Particles<D>& s, std::
   for (int a = 0; a < D; ++a) {
     for (int side = 0; side < 2; ++side) {
       const FaceKind k = bounds_.face[a][side];
-      if (k == FaceKind::periodic) continue;
+      if (k == FaceKind::periodic || leavesThrough(scene_, k)) continue;
       const bool out = side == 0 ? s.r[i][a] < bounds_.lower[a] : s.r[i][a] > bounds_.upper[a];
       if (!out) continue;
       std::ostringstream m;
@@ -543,8 +554,11 @@ struct Plausible {
   Plausible(const Scene& scene, const Boundaries<D>& bounds)
       : bandLow(scene.densityBand[0]), bandHigh(scene.densityBand[1]), phases(scene.phases.data()) {
     for (int a = 0; a < D; ++a) {
-      lo[a] = bounds.face[a][0] == FaceKind::periodic ? -huge : bounds.lower[a];
-      hi[a] = bounds.face[a][1] == FaceKind::periodic ? huge : bounds.upper[a];
+      auto unbounded = [&](FaceKind k) {
+        return k == FaceKind::periodic || leavesThrough(scene, k);
+      };
+      lo[a] = unbounded(bounds.face[a][0]) ? -huge : bounds.lower[a];
+      hi[a] = unbounded(bounds.face[a][1]) ? huge : bounds.upper[a];
     }
   }
   bool operator()(const Vec<D>& r, const Vec<D>& v, double rho, double h, int phase) const {
@@ -761,16 +775,20 @@ std::optional<Failure> Simulation<D>::advanceWith(double dtMax) {
   std::swap(y_, yStar_);
   t_ += dt, dt_ = dt, limit_ = limit;
   ++step_;
+  const std::size_t before = y_.size();
   if constexpr (Integrator::evaluationsPerStep == 1) {
     // The trial state's rates are the new state's (the integrator says why).
     std::swap(f_, fStar_);
     if (cellOrderEvery_ > 0 && step_ % cellOrderEvery_ == 0) storeInCellOrder();
+    if (scene_.leaving == Scene::Leaving::removed) removeDeparted();
     return std::nullopt;
   }
   if (cellOrderEvery_ > 0 && step_ % cellOrderEvery_ == 0) storeInCellOrder();
+  if (scene_.leaving == Scene::Leaving::removed) removeDeparted();
   // The motion is of y's particles whatever their order (h_max does not depend on it); new
-  // lists follow a new order (storeInCellOrder clears the positions they were built at).
-  if (ownReflection)
+  // lists follow a new order (storeInCellOrder clears the positions they were built at), and so
+  // do fewer particles.
+  if (ownReflection || y_.size() != before)
     rates(y_, t_, f_);
   else
     rates(y_, t_, f_, motion);
@@ -825,6 +843,83 @@ void Simulation<D>::storeInCellOrder() {
 }
 
 template <int D>
+void Simulation<D>::removeDeparted() {
+  const std::int64_t n = static_cast<std::int64_t>(y_.size());
+  std::vector<int> gone;
+  for (std::int64_t i = 0; i < n; ++i)
+    for (int a = 0; a < D; ++a)
+      if ((leavesThrough(scene_, bounds_.face[a][0]) && y_.r[i][a] < bounds_.lower[a]) ||
+          (leavesThrough(scene_, bounds_.face[a][1]) && y_.r[i][a] > bounds_.upper[a])) {
+        gone.push_back(static_cast<int>(i));
+        break;
+      }
+  double any = gone.empty() ? 0.0 : 1.0;
+  if (domain_) domain_->maxAll(&any, 1);
+  if (any == 0.0) return;
+  auto departure = [&](int i) {
+    return Departure{id_[i], step_, t_, y_.r[i], y_.v[i], y_.m[i], y_.rho[i], y_.phase[i]};
+  };
+  if (!domain_) {
+    for (const int i : gone) departures_.push_back(departure(i));
+  } else {
+    // In one process's order on process 0: the departed numbered together by key.
+    constexpr int width = 2 * D + 6;
+    std::vector<std::int64_t> place(gone.size()), zero(gone.size(), 0);
+    std::vector<double> rows;
+    for (std::size_t k = 0; k < gone.size(); ++k) {
+      const Departure d = departure(gone[k]);
+      place[k] = key_[gone[k]];
+      rows.insert(rows.end(), {double(d.id), double(d.step), d.time});
+      for (int a = 0; a < D; ++a) rows.push_back(d.r[a]);
+      for (int a = 0; a < D; ++a) rows.push_back(d.v[a]);
+      rows.insert(rows.end(), {d.m, d.rho, double(d.phase)});
+    }
+    domain_->renumber(zero, place);
+    std::vector<double> all;
+    domain_->gather(rows, width, place, all);
+    for (std::size_t k = 0; k < all.size() / width; ++k) {
+      const double* row = all.data() + k * width;
+      Departure d{int(row[0]), long(row[1]),   row[2],         {},
+                  {},          row[3 + 2 * D], row[4 + 2 * D], int(row[5 + 2 * D])};
+      for (int a = 0; a < D; ++a) d.r[a] = row[3 + a], d.v[a] = row[3 + D + a];
+      departures_.push_back(d);
+    }
+  }
+  // The others close up, in their order.
+  std::size_t kept = 0, next = 0;
+  const bool rates = f_.drhodt.size() == y_.size();
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (next < gone.size() && gone[next] == i) {
+      ++next;
+      continue;
+    }
+    y_.r[kept] = y_.r[i], y_.v[kept] = y_.v[i], y_.rho[kept] = y_.rho[i], y_.m[kept] = y_.m[i];
+    y_.h[kept] = y_.h[i], y_.p[kept] = y_.p[i], y_.phase[kept] = y_.phase[i];
+    id_[kept] = id_[i];
+    if (domain_) key_[kept] = key_[i];
+    if (rates)
+      f_.dvdt[kept] = f_.dvdt[i], f_.drhodt[kept] = f_.drhodt[i], f_.dhdt[kept] = f_.dhdt[i];
+    ++kept;
+  }
+  y_.resize(kept), id_.resize(kept);
+  if (rates) f_.resize(kept);
+  if (domain_) {
+    key_.resize(kept);
+    domain_->renumber(std::vector<std::int64_t>(kept, 0), key_);  // keys 0, 1, ... again
+  }
+  // The lists, cells and halo are made anew (also where none is left here: over several
+  // processes the others may keep some).
+  listedAt_.clear(), departedSinceListed_ = true;
+}
+
+template <int D>
+std::vector<double> Simulation<D>::departedVolume() const {
+  std::vector<double> v(scene_.phases.size(), 0.0);
+  for (const Departure& d : departures_) v[d.phase] += d.m / d.rho;
+  return v;
+}
+
+template <int D>
 typename Simulation<D>::Resumable Simulation<D>::resumable() const {
   Resumable r;
   r.ids = id_;
@@ -833,6 +928,7 @@ typename Simulation<D>::Resumable Simulation<D>::resumable() const {
   r.step = step_, r.evaluations = evaluations_, r.reflections = reflections_;
   r.reusedLists = reusedLists_;
   r.listedAt = listedAt_, r.listedH = listedH_;
+  r.departures = departures_;
   return r;
 }
 
@@ -909,7 +1005,7 @@ bool Simulation<D>::resume(const Resumable& whole, const Derivatives<D>& wholeRa
       if (listed) own.listedAt[i] = whole.listedAt[k], own.listedH[i] = whole.listedH[k];
     }
     // (the count is the whole domain's: process 0 carries it, the others none, as summed)
-    if (domain_->rank() != 0) own.reflections = 0;
+    if (domain_->rank() != 0) own.reflections = 0, own.departures.clear();
   }
   const Resumable& r = domain_ ? own : whole;
   const Derivatives<D>& rates = domain_ ? ownRates : wholeRates;
@@ -921,6 +1017,7 @@ bool Simulation<D>::resume(const Resumable& whole, const Derivatives<D>& wholeRa
   id_ = r.ids;
   t_ = r.time, dt_ = r.lastDt, dtFloor_ = r.dtFloor, reflectionDepth_ = r.reflectionDepth;
   limit_ = r.limit, step_ = r.step, reflections_ = r.reflections;
+  departures_ = r.departures;
   // The lists' build from the listed state: a rescan of the halo and the cell list of its
   // positions and h (the other fields set no list, no cell and no halo member).
   listedAt_.clear();

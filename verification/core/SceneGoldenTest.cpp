@@ -78,6 +78,7 @@ std::string describe(const sph::Scene& c) {
       s.put(f + ".wall_velocity", c.wallVelocity[a][side]);
     }
   s.put("hydrostatic_ghosts", c.hydrostaticGhosts);
+  s.put("leaving", std::string(c.leaving == sph::Scene::Leaving::removed ? "remove" : "fail"));
   s.put("wall_model", std::string(sph::name(c.wallModel))), s.put("wall_layers", c.wallLayers);
   for (std::size_t k = 0; k < c.obstacles.size(); ++k) {
     const std::string p = "obstacle[" + std::to_string(k) + "]";

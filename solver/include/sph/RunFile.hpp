@@ -30,6 +30,9 @@ struct SnapshotFields {
   std::vector<double> position, velocity;  // N x 3, unused axes zero
   std::vector<double> density, pressure, h, mass;
   std::vector<std::int32_t> phase;
+  // Each particle's id (its index at the start), ascending; empty where none has left the run
+  // (Simulation::departures), so that particle k is id k.
+  std::vector<std::int32_t> id;
 };
 
 // The run file or its directory cannot be written (exit 4, Run.hpp); the message names the path.

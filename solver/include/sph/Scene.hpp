@@ -86,6 +86,9 @@ struct Scene {
   std::array<std::array<std::vector<double>, 2>, 3> wallVelocity{};
   bool hydrostaticGhosts =
       false;  // ghost pressure: the source's (paper) or hydrostatically corrected
+  // A particle that crosses an open face ([domain] leaving): a failure (escaped_domain) or taken
+  // out of the run and kept in its record of departures (Simulation::departures).
+  enum class Leaving { fails, removed } leaving = Leaving::fails;
   WallModel wallModel = WallModel::mirror_ghosts;
   int wallLayers =
       0;  // layers of wall particles (set by the reader: [walls] layers or its default)

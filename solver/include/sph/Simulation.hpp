@@ -126,6 +126,22 @@ class Simulation {
   const LineVector<Vec<D>>& lastShift() const { return shift_; }
   std::vector<std::string> termNames() const;
 
+  // A particle taken out of the run at the end of the step in which it crossed an open face
+  // (Scene::Leaving::removed), as that step left it.
+  struct Departure {
+    int id;
+    long step;
+    double time;
+    Vec<D> r, v;
+    double m, rho;
+    int phase;
+  };
+  // Every departure so far, by step and then in one process's storage order (over several
+  // processes: on process 0; the others hold none).
+  const std::vector<Departure>& departures() const { return departures_; }
+  // The departed particles' volume m/rho of each phase (summed in departures() order).
+  std::vector<double> departedVolume() const;
+
   // What a checkpoint keeps of the time loop besides the particles (in their stored order) and
   // ids(): with these the next step reads what it would have read (Checkpoint.hpp).
   struct Resumable {
@@ -136,6 +152,7 @@ class Simulation {
     // The positions and h at the neighbour lists' build (empty: no lists kept).
     LineVector<Vec<D>> listedAt;
     LineVector<double> listedH;
+    std::vector<Departure> departures;
   };
   Resumable resumable() const;
   // The whole domain's particles, Resumable and rates in one process's order: over several
@@ -176,6 +193,9 @@ class Simulation {
   std::optional<Failure> checkParticle(const Particles<D>& s, std::size_t i, double t,
                                        long step) const;
   void storeInCellOrder();
+  // Takes out the particles beyond an open face (Scene::Leaving::removed) into departures_; the
+  // others keep their order. Over several processes every process calls it.
+  void removeDeparted();
   // The interaction set's fluid over several processes: the owned `state` and the halo merged
   // in key order (local_), and where each owned and halo particle is in it (placed anew when
   // the halo's members are chosen anew).
@@ -220,6 +240,8 @@ class Simulation {
   Derivatives<D> f_, fStar_;
   InteractionSet<D> set_;
   std::vector<int> id_, order_, idScratch_;
+  std::vector<Departure> departures_;
+  bool departedSinceListed_ = false;  // the lists hold particles that have left
   int cellOrderEvery_ = 0;
   double t_ = 0.0, dt_ = 0.0, dtFloor_ = 0.0;
   TimeStepLimit limit_ = TimeStepLimit::acoustic;
