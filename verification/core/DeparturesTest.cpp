@@ -21,18 +21,6 @@ using namespace sph::core_tests;
 constexpr double top = 0.3;     // the spill tank's open top [m]
 constexpr int particles = 200;  // 0.5 x 0.25 m at dx 0.025
 
-ProgramResult compareRuns(const std::string& a, const std::string& b) {
-  ProgramResult r;
-  const std::string command = std::string(SPH_PYTHON) + " '" + SPH_SOURCE_DIR +
-                              "/perf/compare_runs.py' '" + a + "' '" + b + "' 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 // An output directory beside an edited scene (a fresh one would remove the scene).
 std::string besideScene(const std::string& scene) {
   return std::filesystem::path(scene).parent_path().string() + "/run";

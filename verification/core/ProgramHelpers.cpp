@@ -18,9 +18,9 @@
 
 namespace sph::core_tests {
 
-ProgramResult runSph(const std::string& arguments, const std::string& shellPrefix) {
-  const std::string command =
-      shellPrefix + " '" + std::string(SPH_EXE) + "' " + arguments + " 2>&1";
+namespace {
+// `command` through the shell, its stdout and stderr together.
+ProgramResult runShell(const std::string& command) {
   ProgramResult r;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -30,6 +30,16 @@ ProgramResult runSph(const std::string& arguments, const std::string& shellPrefi
   const int status = pclose(pipe);
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+}  // namespace
+
+ProgramResult runSph(const std::string& arguments, const std::string& shellPrefix) {
+  return runShell(shellPrefix + " '" + std::string(SPH_EXE) + "' " + arguments + " 2>&1");
+}
+
+ProgramResult compareRuns(const std::string& a, const std::string& b) {
+  return runShell(std::string(SPH_PYTHON) + " '" + SPH_SOURCE_DIR + "/perf/compare_runs.py' '" + a +
+                  "' '" + b + "' 2>&1");
 }
 
 int startSph(const std::vector<std::string>& arguments, const std::string& log) {

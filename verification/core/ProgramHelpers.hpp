@@ -17,6 +17,10 @@ struct ProgramResult {
 // `shellPrefix` runs first in the same shell (e.g. "ulimit -v 300000;").
 ProgramResult runSph(const std::string& arguments, const std::string& shellPrefix = "");
 
+// perf/compare_runs.py A B: exit 0 and "N datasets bit-identical" where every dataset, the
+// physics attributes and the /metrics counters are equal to the bit.
+ProgramResult compareRuns(const std::string& a, const std::string& b);
+
 // Starts `sph <arguments>` (no shell) as a child process, its output appended to `log`; returns
 // its process id.
 int startSph(const std::vector<std::string>& arguments, const std::string& log);

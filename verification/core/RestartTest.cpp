@@ -21,20 +21,6 @@ namespace {
 using namespace sph::core_tests;
 namespace fs = std::filesystem;
 
-// perf/compare_runs.py A B: exit 0 and "N datasets bit-identical" where every dataset, the
-// physics attributes and the /metrics counters are equal to the bit.
-ProgramResult compareRuns(const std::string& a, const std::string& b) {
-  ProgramResult r;
-  const std::string command = std::string(SPH_PYTHON) + " '" + SPH_SOURCE_DIR +
-                              "/perf/compare_runs.py' '" + a + "' '" + b + "' 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 // The quick tier's dam break (validation/scenes/dam_break_dx0.025.toml, 200 particles) to 0.5 s:
 // the collapse and the surge's run along the floor, 2,200 steps, cell order renewed every 10 and
 // neighbour lists kept between builds, so that a stop falls between them.
