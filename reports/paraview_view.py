@@ -11,9 +11,17 @@ WRITER = "the nightly test paraview.DamBreakOpensWithDefaultReader"
 
 def read(directory: Path | None, out: Path) -> dict | None:
     """None without --paraview; else paraview.json's entries, with "figure" (the picture's name in `out`, or None)
-    and "error" (why something is missing, or empty)."""
+    and "error" (why something is missing, or empty); "others", the same for each folder in DIR that holds a
+    paraview.json (paraview.SphericImpactOpensWithDefaultReader's spheric_dam_break/)."""
     if directory is None:
         return None
+    found = read_one(directory, out)
+    found["others"] = [read_one(sub, out) for sub in sorted(directory.iterdir())
+                       if sub.is_dir() and (sub / "paraview.json").is_file()]
+    return found
+
+
+def read_one(directory: Path, out: Path) -> dict:
     path = directory / "paraview.json"
     try:
         found = json.loads(path.read_text(encoding="utf-8"))

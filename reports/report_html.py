@@ -408,10 +408,14 @@ def _span(values: list) -> str:
 
 
 def paraview(item: dict | None) -> str:
-    """The run file as ParaView shows it (paraview_view.py)."""
+    """The run files as ParaView shows them (paraview_view.py): the dam break, then each other run opened."""
     if item is None:
         return '<p class="note">not run: no --paraview directory (the nightly test ' \
                'paraview.DamBreakOpensWithDefaultReader writes one).</p>'
+    return "".join(paraview_one(i) for i in [item, *(item.get("others") or [])])
+
+
+def paraview_one(item: dict) -> str:
     if not item.get("cells_per_step") and item.get("error"):
         return f'<p class="warn">{escape(item["error"])}</p>'
     failures = item.get("failures") or []

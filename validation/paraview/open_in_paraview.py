@@ -1,11 +1,12 @@
 """Opens a run's XDMF sidecar in ParaView as a user would and checks what it shows.
 
-    pvpython open_in_paraview.py RUN.xdmf OUT_DIR    (needs an X display: xvfb-run, see CMakeLists.txt)
+    pvpython open_in_paraview.py RUN.xdmf OUT_DIR [--at T]    (needs an X display: xvfb-run, see CMakeLists.txt)
 
 OpenDataFile picks ParaView's default reader for .xdmf (Xdmf3ReaderS in ParaView 5.11). Against the HDF5 run
 file beside it (reports/SCHEMA.md) it checks the time steps, and at every step the points, the cells (one vertex
 cell a particle), the arrays and their values; then the same counts through the legacy XDMFReader. It renders the
-middle snapshot coloured by pressure to OUT_DIR/<name>_pressure.png, checks the picture is not blank, and writes
+middle snapshot (with --at, the one nearest T s) coloured by pressure to OUT_DIR/<name>_pressure.png, seen from
+the side in 2-D and from above the downstream corner in 3-D, checks the picture is not blank, and writes
 OUT_DIR/paraview.json (what it found, for the V&V report's ParaView section). Exit 1 with the reasons when a check
 fails.
 """
@@ -69,7 +70,7 @@ def check_step(grid, snap, failures, where):
             failures.append(f"{where}: point array '{name}' differs from the run file's")
 
 
-def render(reader, t, pressure, png):
+def render(reader, t, pressure, png, solid=False):
     """The snapshot at time t drawn as points coloured by pressure, its colour range the 2nd to 98th percentile of
     the snapshot's `pressure` (the impact's few peaks would leave the rest of the water one colour)."""
     view = simple.CreateView("RenderView")
@@ -89,7 +90,13 @@ def render(reader, t, pressure, png):
     bar.Title, bar.ComponentTitle = "pressure", "[Pa]"
     bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
     bar.WindowLocation = "Upper Right Corner"
-    view.InteractionMode = "2D"
+    if solid:  # from above the corner at the first face of x and y (SPHERIC test 2: the box and the reservoir)
+        view.InteractionMode = "3D"
+        view.CameraFocalPoint = [0.0, 0.0, 0.0]
+        view.CameraPosition = [-1.0, -1.6, 1.2]
+        view.CameraViewUp = [0.0, 0.0, 1.0]
+    else:
+        view.InteractionMode = "2D"
     simple.ResetCamera(view)
     simple.SaveScreenshot(str(png), view, ImageResolution=[800, 600])
     # The same view without the particles (the colour bar alone): the pixels that differ are the particles'.
@@ -112,6 +119,14 @@ def rgb(png):
 
 
 def main(argv):
+    at = None
+    if len(argv) == 5 and argv[3] == "--at":
+        try:
+            at = float(argv[4])
+        except ValueError:
+            print(f"--at {argv[4]}: not a time in seconds", file=sys.stderr)
+            return 2
+        argv = argv[:3]
     if len(argv) != 3:
         print(__doc__, file=sys.stderr)
         return 2
@@ -145,10 +160,11 @@ def main(argv):
     if legacy_cells != [len(s["position"]) for s in snaps]:
         failures.append(f"legacy XDMFReader: cells a step {legacy_cells}")
 
-    k = len(times) // 2
+    k = len(times) // 2 if at is None else int(np.argmin(np.abs(np.asarray(times) - at))) if times else 0
     middle = times[k] if times else 0.0
     png = out / f"{xdmf.stem}_pressure.png"
-    drawn, colours = render(reader, middle, snaps[k]["pressure"], png)
+    solid = bool(snaps) and bool(np.any(snaps[k]["position"][:, 2] != 0.0))  # a 3-D run (z = 0 in 1- and 2-D)
+    drawn, colours = render(reader, middle, snaps[k]["pressure"], png, solid)
     if drawn < MIN_DRAWN_FRACTION or colours < MIN_COLOURS:
         failures.append(f"{png}: the particles drew {100 * drawn:.2f} % of the pixels, in {colours} colours; "
                         f"expected at least {100 * MIN_DRAWN_FRACTION:g} % and {MIN_COLOURS}")
