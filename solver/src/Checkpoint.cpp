@@ -180,31 +180,18 @@ class Reader {
   bool has(const std::string& name) const {
     return H5Lexists(file_, name.c_str(), H5P_DEFAULT) > 0;
   }
-  // The rows of 2-D dataset `name`.
-  std::size_t rows(const std::string& name) const {
-    const hid_t d = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
-    if (d < 0) fail("missing dataset " + name);
-    const hid_t space = H5Dget_space(d);
-    hsize_t dims[2] = {0, 0};
-    const bool ok = space >= 0 && H5Sget_simple_extent_ndims(space) == 2 &&
-                    H5Sget_simple_extent_dims(space, dims, nullptr) >= 0;
-    if (space >= 0) H5Sclose(space);
-    H5Dclose(d);
-    if (!ok) fail("dataset " + name + " is not a table");
-    return dims[0];
-  }
-  // The length of 1-D dataset `name`.
+  // The length of dataset `name` along its first axis (its rows, for a table).
   std::size_t length(const std::string& name) const {
     const hid_t d = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
     if (d < 0) fail("missing dataset " + name);
     const hid_t space = H5Dget_space(d);
-    hsize_t n = 0;
+    hsize_t dims[H5S_MAX_RANK] = {};
     const bool ok = space >= 0 && H5Sget_simple_extent_ndims(space) >= 1 &&
-                    H5Sget_simple_extent_dims(space, &n, nullptr) >= 0;
+                    H5Sget_simple_extent_dims(space, dims, nullptr) >= 0;
     if (space >= 0) H5Sclose(space);
     H5Dclose(d);
     if (!ok) fail("dataset " + name + " has no extent");
-    return n;
+    return dims[0];
   }
 
  private:
@@ -368,17 +355,10 @@ void writeState(const std::string& path, const Scene& scene, const Particles<D>&
     putDoubles(g, "dhdt", f.dhdt, writing);
     putVectors<D>(g, "listed_position", state.listedAt, writing);
     putDoubles(g, "listed_h", state.listedH, writing);
-    {  // a row a departure: id, step, time, r, v, m, rho, phase
-      std::vector<double> rows;
-      for (const auto& d : state.departures) {
-        rows.insert(rows.end(), {double(d.id), double(d.step), d.time});
-        for (int a = 0; a < D; ++a) rows.push_back(d.r[a]);
-        for (int a = 0; a < D; ++a) rows.push_back(d.v[a]);
-        rows.insert(rows.end(), {d.m, d.rho, double(d.phase)});
-      }
-      putArray(g, "departures", H5T_NATIVE_DOUBLE, rows.data(), state.departures.size(), 2 * D + 6,
-               writing);
-    }
+    std::vector<double> departed;  // a row a departure (Simulation::Departure::appendTo)
+    for (const auto& d : state.departures) d.appendTo(departed);
+    putArray(g, "departures", H5T_NATIVE_DOUBLE, departed.data(), state.departures.size(),
+             Simulation<D>::Departure::width, writing);
     putNumber(g, "time", state.time, writing), putNumber(g, "last_dt", state.lastDt, writing);
     putNumber(g, "dt_floor", state.dtFloor, writing);
     putNumber(g, "reflection_depth", state.reflectionDepth, writing);
@@ -499,16 +479,12 @@ CheckpointState<D> readCheckpoint(const std::string& path, const Scene& scene) {
   r.array("/state/listed_h", H5T_NATIVE_DOUBLE, s.listedH.data(), listed, 1);
   // The particles that left the run (none in a checkpoint written before they could).
   if (r.has("/state/departures")) {
-    constexpr std::size_t width = 2 * D + 6;
-    const std::size_t rows = r.rows("/state/departures");
-    std::vector<double> all(rows * width);
-    r.array("/state/departures", H5T_NATIVE_DOUBLE, all.data(), rows, width);
+    using Departure = typename Simulation<D>::Departure;
+    const std::size_t rows = r.length("/state/departures");
+    std::vector<double> all(rows * Departure::width);
+    r.array("/state/departures", H5T_NATIVE_DOUBLE, all.data(), rows, Departure::width);
     for (std::size_t k = 0; k < rows; ++k) {
-      const double* row = all.data() + k * width;
-      typename Simulation<D>::Departure d{
-          int(row[0]), long(row[1]),   row[2],         {},
-          {},          row[3 + 2 * D], row[4 + 2 * D], int(row[5 + 2 * D])};
-      for (int a = 0; a < D; ++a) d.r[a] = row[3 + a], d.v[a] = row[3 + D + a];
+      const Departure d = Departure::ofRow(all.data() + k * Departure::width);
       if (d.phase < 0 || static_cast<std::size_t>(d.phase) >= scene.phases.size())
         r.fail("/state/departures names a phase the scene does not have");
       s.departures.push_back(d);

@@ -91,8 +91,8 @@ class Series {
       if (p.scaleHeight > 0) c.numbers.push_back({"scale_height", p.scaleHeight});
       columns.push_back(c);
     }
-    if (scene.leaving == Scene::Leaving::removed)
-      columns.push_back({"departed_particles", {}, {}, {}});
+    countsDepartures = scene.leaving == Scene::Leaving::removed;
+    if (countsDepartures) columns.push_back({"departed_particles", {}, {}, {}});
     maxVariation.assign(scene.phases.size() + 1, 0.0);
   }
   // `departed`: the volume of each phase that has left the run (Simulation::departedVolume),
@@ -114,7 +114,7 @@ class Series {
     for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
       row.push_back(volume0[k] > 0 ? (d.phaseVolume[k] + departed[k]) / volume0[k] - 1.0 : 0.0);
     row.insert(row.end(), d.probes.begin(), d.probes.end());
-    if (row.size() < columns.size()) row.push_back(double(departures));
+    if (countsDepartures) row.push_back(double(departures));
     for (std::size_t k = 0; k < columns.size(); ++k) columns[k].values.push_back(row[k]);
     maxVariation[0] = std::max(maxVariation[0], std::abs(row[8]));
     for (std::size_t k = 0; k < d.phaseVolume.size(); ++k)
@@ -123,6 +123,7 @@ class Series {
   std::vector<SeriesColumn> columns;
   std::vector<double> volume0, maxVariation;  // [0]: all fluid, [1 + k]: phase k
   double total0 = 0;
+  bool countsDepartures = false;  // the column departed_particles (leaving = "remove")
 };
 
 // /departures: each particle that left the run through an open face, as its last step left it.

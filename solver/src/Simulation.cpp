@@ -211,8 +211,7 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   // processes, the motion and h_max are the whole domain's, so that every process decides as one
   // would.
   const bool skinned = skinFraction_ > 0;
-  bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n &&
-              !departedSinceListed_;
+  bool kept = skinned && motion.listed && static_cast<std::int64_t>(listedAt_.size()) == n;
   double hMax = motion.hMax, moved2 = motion.moved2, grown = motion.grown;
   if (domain_) {
     double v[4] = {hMax, moved2, grown, kept ? 0.0 : 1.0};
@@ -224,7 +223,6 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
     return;
   }
   const bool reuse = kept && 2.0 * std::sqrt(moved2) + 2.0 * grown < skin_;
-  if (!reuse) departedSinceListed_ = false;
   // New lists at an accepted state: the particles that left the slab go to its owner (in the
   // middle of a step y and y* keep the same particles).
   if (domain_ && !reuse && &state == &y_) {
@@ -843,13 +841,33 @@ void Simulation<D>::storeInCellOrder() {
 }
 
 template <int D>
+void Simulation<D>::Departure::appendTo(std::vector<double>& rows) const {
+  rows.insert(rows.end(), {double(id), double(step), time});
+  for (int a = 0; a < D; ++a) rows.push_back(r[a]);
+  for (int a = 0; a < D; ++a) rows.push_back(v[a]);
+  rows.insert(rows.end(), {m, rho, double(phase)});
+}
+
+template <int D>
+typename Simulation<D>::Departure Simulation<D>::Departure::ofRow(const double* row) {
+  Departure d{int(row[0]), long(row[1]),   row[2],         {},
+              {},          row[3 + 2 * D], row[4 + 2 * D], int(row[5 + 2 * D])};
+  for (int a = 0; a < D; ++a) d.r[a] = row[3 + a], d.v[a] = row[3 + D + a];
+  return d;
+}
+
+template <int D>
 void Simulation<D>::removeDeparted() {
   const std::int64_t n = static_cast<std::int64_t>(y_.size());
+  Vec<D> lo, hi;  // beyond them a particle leaves (the other faces: never)
+  for (int a = 0; a < D; ++a) {
+    lo[a] = leavesThrough(scene_, bounds_.face[a][0]) ? bounds_.lower[a] : -huge;
+    hi[a] = leavesThrough(scene_, bounds_.face[a][1]) ? bounds_.upper[a] : huge;
+  }
   std::vector<int> gone;
   for (std::int64_t i = 0; i < n; ++i)
     for (int a = 0; a < D; ++a)
-      if ((leavesThrough(scene_, bounds_.face[a][0]) && y_.r[i][a] < bounds_.lower[a]) ||
-          (leavesThrough(scene_, bounds_.face[a][1]) && y_.r[i][a] > bounds_.upper[a])) {
+      if (y_.r[i][a] < lo[a] || y_.r[i][a] > hi[a]) {
         gone.push_back(static_cast<int>(i));
         break;
       }
@@ -863,27 +881,17 @@ void Simulation<D>::removeDeparted() {
     for (const int i : gone) departures_.push_back(departure(i));
   } else {
     // In one process's order on process 0: the departed numbered together by key.
-    constexpr int width = 2 * D + 6;
     std::vector<std::int64_t> place(gone.size()), zero(gone.size(), 0);
     std::vector<double> rows;
     for (std::size_t k = 0; k < gone.size(); ++k) {
-      const Departure d = departure(gone[k]);
       place[k] = key_[gone[k]];
-      rows.insert(rows.end(), {double(d.id), double(d.step), d.time});
-      for (int a = 0; a < D; ++a) rows.push_back(d.r[a]);
-      for (int a = 0; a < D; ++a) rows.push_back(d.v[a]);
-      rows.insert(rows.end(), {d.m, d.rho, double(d.phase)});
+      departure(gone[k]).appendTo(rows);
     }
     domain_->renumber(zero, place);
     std::vector<double> all;
-    domain_->gather(rows, width, place, all);
-    for (std::size_t k = 0; k < all.size() / width; ++k) {
-      const double* row = all.data() + k * width;
-      Departure d{int(row[0]), long(row[1]),   row[2],         {},
-                  {},          row[3 + 2 * D], row[4 + 2 * D], int(row[5 + 2 * D])};
-      for (int a = 0; a < D; ++a) d.r[a] = row[3 + a], d.v[a] = row[3 + D + a];
-      departures_.push_back(d);
-    }
+    domain_->gather(rows, Departure::width, place, all);
+    for (std::size_t k = 0; k < all.size() / Departure::width; ++k)
+      departures_.push_back(Departure::ofRow(all.data() + k * Departure::width));
   }
   // The others close up, in their order.
   std::size_t kept = 0, next = 0;
@@ -907,9 +915,7 @@ void Simulation<D>::removeDeparted() {
     key_.resize(kept);
     domain_->renumber(std::vector<std::int64_t>(kept, 0), key_);  // keys 0, 1, ... again
   }
-  // The lists, cells and halo are made anew (also where none is left here: over several
-  // processes the others may keep some).
-  listedAt_.clear(), departedSinceListed_ = true;
+  listedAt_.clear();  // the lists, cells and halo are made anew
 }
 
 template <int D>

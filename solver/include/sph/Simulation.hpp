@@ -135,6 +135,11 @@ class Simulation {
     Vec<D> r, v;
     double m, rho;
     int phase;
+    // As a row of numbers (a checkpoint's table, a message between processes): id, step, time,
+    // r, v, m, rho, phase.
+    static constexpr int width = 2 * D + 6;
+    void appendTo(std::vector<double>& rows) const;
+    static Departure ofRow(const double* row);
   };
   // Every departure so far, by step and then in one process's storage order (over several
   // processes: on process 0; the others hold none).
@@ -241,7 +246,6 @@ class Simulation {
   InteractionSet<D> set_;
   std::vector<int> id_, order_, idScratch_;
   std::vector<Departure> departures_;
-  bool departedSinceListed_ = false;  // the lists hold particles that have left
   int cellOrderEvery_ = 0;
   double t_ = 0.0, dt_ = 0.0, dtFloor_ = 0.0;
   TimeStepLimit limit_ = TimeStepLimit::acoustic;
