@@ -11,14 +11,18 @@
 namespace sph {
 
 template <int D>
-void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
+void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
                          const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
                          InteractionSet<D>& set, HaloMembers members) {
   const std::size_t n = fluid.size();
   const std::int64_t count = static_cast<std::int64_t>(n);
   const bool same = members == HaloMembers::same;
   if (same && set.nFluid != n) throw std::logic_error("buildInteractionSet: the fluid changed");
-  if (!same) set.resize(n);  // the fluid entries; the halo is appended below
+  if (!same) {
+    set.resize(n);  // the fluid entries; the halo is appended below
+    set.ownedParticle.resize(fluid.halo ? n : 0);
+    set.nOwned = fluid.owned.size();
+  }
   set.nFluid = n;
   // One team for the fluid copy and every axis's halo (a team costs 0.6 us or more to
   // gather on the 2-core machine; the whole set about 10 us at 1,700 entries on one thread). Each
@@ -35,22 +39,42 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
       // Through pointers held in registers: a store through an Eigen vector may alias anything,
       // so the vectors' own data pointers would be loaded again after each (13.0 against 14.3 us
       // for the dam break's set at 1,250 particles, one thread, best of 5,000).
-      const Vec<D>* r = fluid.r.data();
-      const Vec<D>* v = fluid.v.data();
-      const double *rho = fluid.rho.data(), *m = fluid.m.data(), *h = fluid.h.data();
-      const int* phase = fluid.phase.data();
+      struct Fields {
+        const Vec<D>*r, *v;
+        const double *rho, *m, *h;
+        const int* phase;
+      };
+      auto fieldsOf = [](const Particles<D>& p) {
+        return Fields{p.r.data(), p.v.data(), p.rho.data(), p.m.data(), p.h.data(), p.phase.data()};
+      };
+      const Fields own = fieldsOf(fluid.owned);
+      const Fields received = fluid.halo ? fieldsOf(*fluid.halo) : own;
       const Phase* ph = phases.data();
       Vec<D>* X = set.x.data();
       Vec<D>* V = set.v.data();
       double *Rho = set.rho.data(), *M = set.m.data(), *H = set.h.data(), *P = set.p.data(),
              *Mu = set.mu.data();
       int* source = set.source.data();
-      walk(shareOf(count, t, nt), [=](std::int64_t i) {
-        X[i] = r[i], V[i] = v[i], Rho[i] = rho[i], M[i] = m[i], H[i] = h[i];
-        P[i] = TaitEquationOfState::pressure(rho[i], ph[phase[i]]);
-        Mu[i] = ph[phase[i]].mu;
+      const auto copy = [=](const Fields& f, std::int64_t s, std::int64_t i) {
+        X[i] = f.r[s], V[i] = f.v[s], Rho[i] = f.rho[s], M[i] = f.m[s], H[i] = f.h[s];
+        P[i] = TaitEquationOfState::pressure(f.rho[s], ph[f.phase[s]]);
+        Mu[i] = ph[f.phase[s]].mu;
         source[i] = static_cast<int>(i);
-      });
+      };
+      if (!fluid.halo) {
+        walk(shareOf(count, t, nt), [=](std::int64_t i) { copy(own, i, i); });
+      } else {
+        const int* from = fluid.from;
+        int* ownedParticle = same ? nullptr : set.ownedParticle.data();
+        walk(shareOf(count, t, nt), [=](std::int64_t i) {
+          const int f = from[i];
+          if (f >= 0)
+            copy(own, f, i);
+          else
+            copy(received, -1 - f, i);
+          if (ownedParticle) ownedParticle[i] = std::max(f, -1);
+        });
+      }
     }
     auto& near = set.nearFace[t];
     auto& mine = near.entries;
@@ -175,13 +199,13 @@ void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& ph
   }
 }
 
-template void buildInteractionSet<1>(const Particles<1>&, const std::vector<Phase>&,
+template void buildInteractionSet<1>(const SetFluid<1>&, const std::vector<Phase>&,
                                      const Boundaries<1>&, double, const Vec<1>&,
                                      InteractionSet<1>&, HaloMembers);
-template void buildInteractionSet<2>(const Particles<2>&, const std::vector<Phase>&,
+template void buildInteractionSet<2>(const SetFluid<2>&, const std::vector<Phase>&,
                                      const Boundaries<2>&, double, const Vec<2>&,
                                      InteractionSet<2>&, HaloMembers);
-template void buildInteractionSet<3>(const Particles<3>&, const std::vector<Phase>&,
+template void buildInteractionSet<3>(const SetFluid<3>&, const std::vector<Phase>&,
                                      const Boundaries<3>&, double, const Vec<3>&,
                                      InteractionSet<3>&, HaloMembers);
 

@@ -354,8 +354,9 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
     view.record = view.recordStore.data(), view.extra = view.extraStore.data();
   }
   const int nFluid = static_cast<int>(set.nFluid);
-  out.resize(set.nFluid);
-  out.sumsWidth = own, out.sums.resize(own * set.nFluid);
+  out.resize(set.owned());
+  out.sumsWidth = own, out.sums.resize(own * set.owned());
+  const int* ownedParticle = set.ownedParticle.empty() ? nullptr : set.ownedParticle.data();
   // Bands of two layers of cells: a point's forward neighbours lie in its own band and the next,
   // so the even bands can run at the same time, then the odd ones. Set up before the region when
   // the lists are reused, else by thread 0 after the cell list.
@@ -834,8 +835,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
       Vec<D>* dV = out.dvdt.data();
       const Vec<D> gravity = g;
       walk(mine, [=](std::int64_t k) {
-        const int dst = sorted[k];
-        if (dst >= nFluid) return;
+        int dst = sorted[k];
+        if (dst >= nFluid || (ownedParticle && (dst = ownedParticle[dst]) < 0)) return;
         const double* rate = rates + rateWidth * k;
         terms::ParticleRates<Vec<D>> r{rate[0], rate[1], 0.0, Vec<D>()};
         for (int a = 0; a < D; ++a) r.dvdt[a] = rate[2 + a];

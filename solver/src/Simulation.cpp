@@ -264,35 +264,25 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   for (int a = 0; a < D; ++a) g[a] = scene_.bodyAcceleration[a];
   // Over several processes the set is built from the owned particles and the halo within
   // the support plus the skin of them (every entry the owned particles' lists may hold).
-  const Particles<D>* fluid = &state;
   if (domain_) {
     // (and, with fixed wall particles, the fluid that gives those within it their state)
     const double width = 2.0 * hMax + skin_ + boundary_->fixedReach();
     domain_->exchangeHalo(state, key_, 1.01 * width, !reuse, halo_, haloKey_);
-    mergeHalo(state, !reuse);
-    fluid = &local_;
+    placeHalo(!reuse);
   }
+  const SetFluid<D> fluid = domain_ ? SetFluid<D>(state, halo_, placed_) : SetFluid<D>(state);
   // Ghosts within the support plus the skin: those the kept lists may need.
-  buildSet(*fluid, 2.0 * hMax + skin_, reuse ? HaloMembers::same : HaloMembers::rescan, set_);
-  if (domain_) {
-    if (!reuse) frameGrid(hMax);
-    forces_(set_, localRates_, g, {skin_, reuse}, false);
-    out.resize(static_cast<std::size_t>(n));
-    forEachInShares(n, [&](std::int64_t i) {
-      const int k = ownedAt_[i];
-      out.dvdt[i] = localRates_.dvdt[k], out.drhodt[i] = localRates_.drhodt[k];
-      out.dhdt[i] = localRates_.dhdt[k];
-    });
-  } else {
-    forces_(set_, out, g, {skin_, reuse}, shiftingSums);  // with F/rho of eq. (12)
-  }
+  buildSet(fluid, 2.0 * hMax + skin_, reuse ? HaloMembers::same : HaloMembers::rescan, set_);
+  if (domain_ && !reuse) frameGrid(hMax);
+  // (over several processes the rates of the owned particles only, in their order)
+  forces_(set_, out, g, {skin_, reuse}, shiftingSums);  // with F/rho of eq. (12)
   if (source_) source_(t, state, out);
   ++evaluations_;
   if (reuse) ++reusedLists_;
 }
 
 template <int D>
-void Simulation<D>::buildSet(const Particles<D>& fluid, double reach, HaloMembers members,
+void Simulation<D>::buildSet(const SetFluid<D>& fluid, double reach, HaloMembers members,
                              InteractionSet<D>& set) const {
   boundary_->build(fluid, scene_.phases, reach, members, set);
   // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall
@@ -319,28 +309,16 @@ const InteractionSet<D>& Simulation<D>::stateSet(InteractionSet<D>& scratch) con
 }
 
 template <int D>
-void Simulation<D>::mergeHalo(const Particles<D>& state, bool rescan) {
-  const std::int64_t n = static_cast<std::int64_t>(state.size());
-  const std::int64_t nh = static_cast<std::int64_t>(halo_.size());
-  // Where each owned and halo particle goes, merged by key: anew with the halo's members.
-  if (rescan || static_cast<std::int64_t>(ownedAt_.size()) != n ||
-      static_cast<std::int64_t>(haloAt_.size()) != nh) {
-    ownedAt_.resize(n), haloAt_.resize(nh), localOwned_.resize(n + nh);
-    std::int64_t i = 0, j = 0;
-    for (std::int64_t k = 0; k < n + nh; ++k) {
-      const bool own = j == nh || (i < n && key_[i] < haloKey_[j]);
-      localOwned_[k] = own;
-      (own ? ownedAt_[i++] : haloAt_[j++]) = static_cast<int>(k);
-    }
+void Simulation<D>::placeHalo(bool rescan) {
+  const std::int64_t n = static_cast<std::int64_t>(key_.size());
+  const std::int64_t nh = static_cast<std::int64_t>(haloKey_.size());
+  if (!rescan && static_cast<std::int64_t>(placed_.size()) == n + nh) return;
+  placed_.resize(n + nh);
+  std::int64_t i = 0, j = 0;
+  for (std::int64_t k = 0; k < n + nh; ++k) {
+    const bool own = j == nh || (i < n && key_[i] < haloKey_[j]);
+    placed_[k] = own ? static_cast<int>(i++) : static_cast<int>(-1 - j++);
   }
-  local_.resize(n + nh);
-  auto copy = [&](const Particles<D>& from, std::int64_t i, std::int64_t k) {
-    local_.r[k] = from.r[i], local_.v[k] = from.v[i], local_.rho[k] = from.rho[i];
-    local_.m[k] = from.m[i], local_.h[k] = from.h[i], local_.p[k] = from.p[i];
-    local_.phase[k] = from.phase[i];
-  };
-  forEachInShares(n, [&](std::int64_t i) { copy(state, i, ownedAt_[i]); });
-  forEachInShares(nh, [&](std::int64_t j) { copy(halo_, j, haloAt_[j]); });
 }
 
 template <int D>
@@ -359,7 +337,7 @@ void Simulation<D>::frameGrid(double hMax) {
     if (source < 0)
       ++fixed;
     else
-      entries += localOwned_[source];
+      entries += placed_[source] >= 0;
   }
   // (and those left out of the set as in no pair: InteractionSet::leftOut)
   fixed += static_cast<std::int64_t>(set_.leftOut.count);
@@ -798,16 +776,14 @@ void Simulation<D>::storeInCellOrder() {
   // The last evaluation was of the corrector's y*, whose particles have y's indices.
   const std::int64_t n = static_cast<std::int64_t>(y_.size());
   if (domain_) {
-    // The owned entries of the set's fluid (local_, the same particles as y's) in cell order,
+    // The owned entries of the set's fluid (placed_: the same particles as y's) in cell order,
     // numbered anew together with every other process's.
-    forces_.cellOrder(local_.size(), order_, &cells_);
-    if (order_.size() != local_.size()) return;
-    std::vector<int> ownedIndex(local_.size(), -1);
-    for (std::int64_t i = 0; i < n; ++i) ownedIndex[ownedAt_[i]] = static_cast<int>(i);
+    forces_.cellOrder(placed_.size(), order_, &cells_);
+    if (order_.size() != placed_.size()) return;
     std::vector<std::int64_t> cells, keys;
     std::size_t placed = 0;
     for (std::size_t k = 0; k < order_.size(); ++k)
-      if (const int i = ownedIndex[order_[k]]; i >= 0) {
+      if (const int i = placed_[order_[k]]; i >= 0) {
         order_[placed++] = i;
         cells.push_back(cells_[k]), keys.push_back(key_[i]);
       }

@@ -50,6 +50,11 @@ struct InteractionSet {
   // (FixedWalls.hpp). List q is wallNeighbours[wallNeighboursAt[q] .. wallNeighboursAt[q + 1]).
   std::vector<std::int32_t> wallNeighbours;
   std::vector<std::size_t> wallNeighboursAt;
+  // Over several processes, the process's own particle that each fluid entry is (-1: a copy of
+  // another process's, which that process evaluates), and how many are its own; empty: fluid
+  // entry k is particle k. The force evaluation writes the rates of these particles only.
+  std::vector<int> ownedParticle;
+  std::size_t nOwned = 0;
 
   std::size_t size() const { return x.size(); }
   // Where the fluid and its halo end: entries appended after them (fixed wall particles) begin.
@@ -58,14 +63,32 @@ struct InteractionSet {
     for (const auto& h : halo) n += h.size();
     return n;
   }
+  // How many particles the force evaluation writes rates for.
+  std::size_t owned() const { return ownedParticle.empty() ? nFluid : nOwned; }
   void clear() {
-    resize(0), walls.clear(), leftOut = {};
+    resize(0), walls.clear(), leftOut = {}, ownedParticle.clear(), nOwned = 0;
     wallNeighbours.clear(), wallNeighboursAt.clear();
   }
   void resize(std::size_t n) {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
     source.resize(n);
   }
+};
+
+// The fluid a set is built from: the particles of one store in their order, or over several
+// processes a process's own particles and the halo it received, placed together in key order:
+// the set's fluid entry k is owned particle from[k] where from[k] >= 0, else halo particle
+// -1 - from[k] (Simulation::placeHalo).
+template <int D>
+struct SetFluid {
+  SetFluid(const Particles<D>& all) : owned(all), count(all.size()) {}  // NOLINT: one store
+  SetFluid(const Particles<D>& own, const Particles<D>& received, const std::vector<int>& placed)
+      : owned(own), halo(&received), from(placed.data()), count(placed.size()) {}
+  const Particles<D>& owned;
+  const Particles<D>* halo = nullptr;
+  const int* from = nullptr;
+  std::size_t count;
+  std::size_t size() const { return count; }
 };
 
 // Copies the fluid state (pressure from the Tait EOS, viscosity from the phase) into `set`, then
@@ -83,8 +106,14 @@ struct InteractionSet {
 // as many particles as then, and a member's image is then in the same place of the set.
 enum class HaloMembers { rescan, same };
 template <int D>
-void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
+void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
                          const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
                          InteractionSet<D>& set, HaloMembers members = HaloMembers::rescan);
+template <int D>
+void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
+                         const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
+                         InteractionSet<D>& set, HaloMembers members = HaloMembers::rescan) {
+  buildInteractionSet(SetFluid<D>(fluid), phases, bounds, reach, ghostGravity, set, members);
+}
 
 }  // namespace sph

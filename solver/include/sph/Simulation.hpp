@@ -201,13 +201,13 @@ class Simulation {
   // Takes out the particles beyond an open face (Scene::Leaving::removed) into departures_; the
   // others keep their order. Over several processes every process calls it.
   void removeDeparted();
-  // The interaction set's fluid over several processes: the owned `state` and the halo merged
-  // in key order (local_), and where each owned and halo particle is in it (placed anew when
-  // the halo's members are chosen anew).
-  void mergeHalo(const Particles<D>& state, bool rescan);
+  // Over several processes, where the owned particles and the halo go in the interaction set's
+  // fluid, in key order (placed_, SetFluid): placed anew when the halo's members are chosen
+  // anew.
+  void placeHalo(bool rescan);
   // The set from `fluid`: the boundary's entries, and the ghosts' densities where they take the
   // hydrostatic pressure.
-  void buildSet(const Particles<D>& fluid, double reach, HaloMembers members,
+  void buildSet(const SetFluid<D>& fluid, double reach, HaloMembers members,
                 InteractionSet<D>& set) const;
   // The whole domain's cell grid, from every process's part of the set (CellList::Frame).
   void frameGrid(double hMax);
@@ -257,11 +257,8 @@ class Simulation {
   bool ratesOfState_ = true;  // false: f_ is carried from the step before (VelocityVerlet.hpp)
   std::shared_ptr<DomainDecomposition<D>> domain_;  // null: one process
   std::vector<std::int64_t> key_, haloKey_, cells_;
-  Particles<D> halo_, local_;
-  std::vector<int> ownedAt_,
-      haloAt_;  // owned particle i is local_'s entry ownedAt_[i], halo j haloAt_[j]
-  std::vector<unsigned char> localOwned_;  // whether local_'s entry k is owned
-  Derivatives<D> localRates_;
+  Particles<D> halo_;
+  std::vector<int> placed_;  // the set's fluid entry k: owned particle i >= 0, or halo -1 - j
 };
 
 }  // namespace sph

@@ -95,7 +95,7 @@ WallParticles<D>::WallParticles(const Boundaries<D>& halo, const Vec<D>& ghostGr
       terms_(std::move(terms)) {}
 
 template <int D>
-void WallParticles<D>::build(const Particles<D>& fluid, const std::vector<Phase>& phases,
+void WallParticles<D>::build(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
                              double reach, HaloMembers members, InteractionSet<D>& set) const {
   buildInteractionSet(fluid, phases, halo_, reach, ghostGravity_, set, members);
   walls_->append(set, reach, members);

@@ -39,7 +39,7 @@ class Boundary {
   // Fills `set` from `fluid`: the fluid entries (pressure from the phase's EOS), the halo of the
   // box's faces within `reach`, then any fixed particles. HaloMembers::same as in
   // buildInteractionSet.
-  virtual void build(const Particles<D>& fluid, const std::vector<Phase>& phases, double reach,
+  virtual void build(const SetFluid<D>& fluid, const std::vector<Phase>& phases, double reach,
                      HaloMembers members, InteractionSet<D>& set) const = 0;
   // How far from a fixed particle the fluid lies that it takes its state from (0: no fixed
   // particles): a process holding part of the fluid needs that much more of the rest.

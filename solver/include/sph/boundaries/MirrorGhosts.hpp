@@ -18,7 +18,7 @@ class MirrorGhosts final : public Boundary<D> {
   void listTerms(std::vector<std::string>& terms) const override {
     if (bounds_.anyWall()) terms.push_back("ghost_walls");
   }
-  void build(const Particles<D>& fluid, const std::vector<Phase>& phases, double reach,
+  void build(const SetFluid<D>& fluid, const std::vector<Phase>& phases, double reach,
              HaloMembers members, InteractionSet<D>& set) const override {
     buildInteractionSet(fluid, phases, bounds_, reach, ghostGravity_, set, members);
   }

@@ -56,7 +56,7 @@ class WallParticles final : public Boundary<D> {
   void listTerms(std::vector<std::string>& terms) const override {
     terms.insert(terms.end(), terms_.begin(), terms_.end());
   }
-  void build(const Particles<D>& fluid, const std::vector<Phase>& phases, double reach,
+  void build(const SetFluid<D>& fluid, const std::vector<Phase>& phases, double reach,
              HaloMembers members, InteractionSet<D>& set) const override;
   double fixedReach() const override { return walls_->reach(); }
   bool hasInnerSolids() const override { return !solids_.empty(); }
