@@ -143,6 +143,22 @@ TEST(Neighbours, CellListRefusesPointsWithoutABox) {
   EXPECT_EQ(cells.cells(), 1);
 }
 
+// A cell size of 0 (every point without support), below 0 or not a number: cells as wide as the
+// box, where a grid of such cells would have no end, and every point still in one of them.
+TEST(Neighbours, CellListTakesACellSizeThatIsNoPositiveNumber) {
+  std::vector<sph::Vec<2>> x;
+  for (int k = 0; k < 10; ++k) x.push_back(sph::Vec<2>(0.1 * k, 0.5));
+  for (double size : {0.0, -1.0, std::nan("")}) {
+    sph::CellList<2> cells;
+    cells.build(x, size);
+    EXPECT_LE(cells.cells(), 4) << "cell size " << size;
+    EXPECT_EQ(cells.order().size(), x.size()) << "cell size " << size;
+  }
+  sph::CellList<2> one;  // all points at one place: a box of no extent
+  one.build(std::vector<sph::Vec<2>>(5, sph::Vec<2>(0.25, 0.5)), 0.0);
+  EXPECT_EQ(one.cells(), 1);
+}
+
 TEST(Neighbours, ForwardRowsHoldEachPairOnce) {
   for (bool clustered : {false, true}) {
     forwardRowsAgainstBruteForce<1>(5, clustered);

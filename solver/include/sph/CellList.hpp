@@ -427,7 +427,13 @@ class CellList {
     // Keep the grid O(N) even when a few points are far apart: coarser cells stay correct. The
     // cells are counted in doubles, so that a box of any extent (a wall 1e300 m away) gives a
     // count, not an integer overflow, and coarser cells until it fits.
+    // A cell size that is no positive number (a support of 0: no point has a neighbour) gives
+    // cells as wide as the box: doubling it would never end.
     g.size = cellSize;
+    if (!(cellSize > 0.0)) {
+      g.size = 1.0;
+      for (int a = 0; a < D; ++a) g.size = std::max(g.size, hi[a] - lo[a]);
+    }
     const double most = static_cast<double>(cellsPerPoint) * static_cast<double>(n) + 64.0;
     for (;;) {
       double total = 1.0;
