@@ -61,16 +61,45 @@ void FixedWalls<D>::choose(InteractionSet<D>& set, double reach) const {
     fluidCells_.build(
         nFluid, [&](std::size_t f, int a) { return set.x[f][a]; }, near);
     const auto& order = fluidCells_.order();
+    // Each cell's box of its fluid, at the cell's first place in the sorted order: a wall
+    // particle decides a cell at once where the whole box lies beyond `near` of it, or within.
+    // Only where the box says so with a margin far above the rounding of a distance, so that
+    // the choice is the particle-by-particle test's.
+    const std::int64_t nCells = fluidCells_.cells();
+    cellLo_.resize(nFluid), cellHi_.resize(nFluid);
+#pragma omp parallel for schedule(static) if (static_cast <std::int64_t>(nFluid) >= parallelFrom())
+    for (std::int64_t c = 0; c < nCells; ++c) {
+      const int begin = fluidCells_.cellBegin(c), end = fluidCells_.cellEnd(c);
+      if (begin == end) continue;
+      Vec<D> lo = set.x[order[begin]], hi = lo;
+      for (int k = begin + 1; k < end; ++k)
+        lo = lo.cwiseMin(set.x[order[k]]), hi = hi.cwiseMax(set.x[order[k]]);
+      cellLo_[begin] = lo, cellHi_[begin] = hi;
+    }
+    const double beyond = near2 * (1.0 + 1e-9), within = near2 * (1.0 - 1e-9);
     std::vector<char> in(x_.size(), 0);
     const std::int64_t nWall = static_cast<std::int64_t>(x_.size());
 #pragma omp parallel for schedule(static) if (nWall >= parallelFrom())
     for (std::int64_t w = 0; w < nWall; ++w) {
       const std::int64_t c = fluidCells_.cellOf(x_[w]);
       if (c < 0) continue;
+      const Vec<D>& xw = x_[w];
       bool any = false;
-      fluidCells_.forEachAdjacentRow(c, [&](int begin, int end) {
+      fluidCells_.forEachAdjacentRange(c, [&](int begin, int end) {
+        if (any) return;
+        double nearest2 = 0, farthest2 = 0;  // from x_w to the cell's box
+        for (int a = 0; a < D; ++a) {
+          const double below = cellLo_[begin][a] - xw[a], above = xw[a] - cellHi_[begin][a];
+          const double gap = std::max({0.0, below, above}), span = std::max(-below, -above);
+          nearest2 += gap * gap, farthest2 += span * span;
+        }
+        if (nearest2 > beyond) return;
+        if (farthest2 < within) {
+          any = true;
+          return;
+        }
         for (int k = begin; k < end && !any; ++k)
-          any = (x_[w] - set.x[order[k]]).squaredNorm() < near2;
+          any = (xw - set.x[order[k]]).squaredNorm() < near2;
       });
       in[w] = any;
     }

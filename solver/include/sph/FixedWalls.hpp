@@ -91,7 +91,8 @@ class FixedWalls {
   typename CellList<D>::Frame frame_;
   mutable std::array<std::vector<double>, D> sorted_;  // the entries' coordinates in cell order
   mutable CellList<D> fluidCells_;  // the fluid in cells, for choosing the wall particles in a set
-  Vec<D> lo_, hi_;                  // the wall particles' box
+  mutable std::vector<Vec<D>> cellLo_, cellHi_;  // each cell's box of its fluid, at its first place
+  Vec<D> lo_, hi_;                               // the wall particles' box
   void choose(InteractionSet<D>& set, double reach) const;
   // The chosen wall particles' lists from the fluid in cells, then their state.
   void sumAndList(InteractionSet<D>& set, std::size_t base, double reach) const;
