@@ -329,6 +329,12 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   // v_y = 0 in 1-D; five in 3-D), then the term set's own sums (TermSet::ownSums), if any; its
   // width a power of two, so that 16 j times it over 16 is an addressing mode's scale.
   constexpr int own = Terms::template ownSums<D>, rateUsed = (D <= 2 ? 4 : 5) + own;
+  // The fields a particle's record holds follow from what the terms read (terms::Reads): the
+  // extra record {mu, 1/rho} only where a term reads either, and in 3-D each of rho, p/rho^2
+  // and m only where read. (The 2-D record of 8 keeps every field: its loads are two whole
+  // transposes whatever they hold.)
+  constexpr terms::Reads reads = Terms::reads;
+  constexpr bool extraRecord = reads.viscosity || reads.densityInverse;
   constexpr int recordSize = 8, extraSize = 2,
                 rateWidth = rateUsed <= 4   ? 4
                             : rateUsed <= 8 ? 8
@@ -503,8 +509,10 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           for (int a = 0; a < D; ++a) wx[a][k] = sx[s][a];
           wh[k] = h, wReceives[k] = s < nFluid ? -1 : 0;
         }
-        double* e = extras + extraSize * k;
-        e[0] = f.mu, e[1] = rhoInv;
+        if constexpr (extraRecord) {
+          double* e = extras + extraSize * k;
+          e[0] = f.mu, e[1] = rhoInv;
+        }
         if (rates) {
           double* rate = rates + rateWidth * k;
           for (int f = 0; f < rateWidth; ++f) rate[f] = 0.0;
@@ -516,7 +524,9 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           r[4] = h, r[5] = rho, r[6] = pr, r[7] = m;
         } else {
           for (int a = 0; a < D; ++a) wv[a][k] = sv[s][a];
-          wRho[k] = rho, wM[k] = m, wPr[k] = pr;
+          if constexpr (reads.density) wRho[k] = rho;
+          if constexpr (reads.mass) wM[k] = m;
+          if constexpr (reads.pressure) wPr[k] = pr;
         }
       };
     };
@@ -595,10 +605,12 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           hi = r[4], rhoi = r[5], pri = r[6], mi = r[7];
         } else {
           for (int a = 0; a < 3; ++a) xi[a] = broadcast(xs[a][i]), vi[a] = broadcast(vs[a][i]);
-          hi = hs[i], rhoi = rhos[i], pri = prs[i], mi = ms[i];
+          hi = hs[i];
+          rhoi = reads.density ? rhos[i] : 0.0, pri = reads.pressure ? prs[i] : 0.0;
+          mi = reads.mass ? ms[i] : 0.0;
         }
         const double* ei = extra + extraSize * i;
-        const double mui = ei[0], rhoInvi = ei[1];
+        const double mui = extraRecord ? ei[0] : 0.0, rhoInvi = extraRecord ? ei[1] : 0.0;
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
         Vd accOwn[own > 0 ? own : 1] = {};            // the own sums
 
@@ -686,13 +698,20 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
             xj[2] = vj[2] = Vd{};
           } else {
             for (int a = 0; a < 3; ++a) xj[a] = gather(xs[a]), vj[a] = gather(vs[a]);
-            hj = gather(hs), rhoj = gather(rhos), prj = gather(prs), mj = gather(ms);
+            hj = gather(hs);
+            rhoj = prj = mj = Vd{};
+            if constexpr (reads.density) rhoj = gather(rhos);
+            if constexpr (reads.pressure) prj = gather(prs);
+            if constexpr (reads.mass) mj = gather(ms);
           }
-          static_assert(extraSize * sizeof(double) == 16);
-          const Vd t0 = load2(at(extra, 1, 0), at(extra, 1, 2)),
-                   t1 = load2(at(extra, 1, 1), at(extra, 1, 3));
-          const Vd muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6),
-                   rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7);
+          Vd muj{}, rhoInvj{};
+          if constexpr (extraRecord) {
+            static_assert(extraSize * sizeof(double) == 16);
+            const Vd t0 = load2(at(extra, 1, 0), at(extra, 1, 2)),
+                     t1 = load2(at(extra, 1, 1), at(extra, 1, 3));
+            muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6);
+            rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7);
+          }
           // r_ij, v_ij by component.
           const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
           const Vd ry = xi[1] - xj[1], vy = vi[1] - vj[1];
@@ -706,7 +725,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
               Skinned ? listed & (r2 > 0.0) & (r2 < reachFactor2 * hSum * hSum) : listed;
           const Vd r2c = inside ? r2 : hSum2;
           const Vd rEta2 = r2c + terms::etaSquaredOfHSum2 * hSum2;
-          const Vd rhoSum = Terms::reads.rhoSumInverse ? rhoi + rhoj : broadcast(1.0);
+          const Vd rhoSum = reads.rhoSumInverse ? rhoi + rhoj : broadcast(1.0);
           const auto inv = pairInverses(r2c, hSum, rEta2, rhoSum);
           const Vd r = inv.r, hInv = 2.0 * inv.a;  // 1 / h_ij
           const Vd gradW = Kernel::template gradOverR<D>(r, inv.rInv, hInv);

@@ -28,6 +28,12 @@
 #include "Results.hpp"
 #include "sph/EquationOfState.hpp"
 #include "sph/ForceEvaluation.hpp"
+#include "sph/terms/ArtificialViscosity.hpp"
+#include "sph/terms/ContinuityEquation.hpp"
+#include "sph/terms/DensityDiffusionFourtakas.hpp"
+#include "sph/terms/MorrisViscosity.hpp"
+#include "sph/terms/PressureGradient.hpp"
+#include "sph/terms/TermSet.hpp"
 
 namespace {
 
@@ -319,6 +325,24 @@ void keptLists(unsigned seed) {
                       what + ", all 27 term combinations",
                   worst, "<=", tolerance, "summation round-off bound, as the full build");
   }
+}
+
+// The pair loop lays out and loads the fields the set's terms read (terms::Reads): the extra
+// record {mu, 1/rho} only with a term that reads either, rho in 3-D only with one that reads it.
+// The reference loops above check that each term's declaration is complete: a field a term reads
+// but does not declare is 0 in the loop.
+TEST(ForceEvaluation, RecordHoldsTheFieldsTheTermsRead) {
+  using namespace sph::terms;
+  using Inviscid = TermSet<ContinuityEquation, PressureGradient, ArtificialViscosity>;
+  EXPECT_TRUE(Inviscid::reads.mass && Inviscid::reads.pressure);
+  EXPECT_TRUE(Inviscid::reads.density);  // 1 / (rho_i + rho_j) of eq. (10)
+  EXPECT_FALSE(Inviscid::reads.densityInverse || Inviscid::reads.viscosity);  // no extra record
+  using Morris = TermSet<ContinuityEquation, PressureGradient, MorrisViscosity>;
+  EXPECT_TRUE(Morris::reads.viscosity && Morris::reads.densityInverse);
+  EXPECT_FALSE(Morris::reads.density);  // not gathered in 3-D
+  using Diffusive = TermSet<ContinuityEquation, PressureGradient, DensityDiffusionFourtakas>;
+  EXPECT_TRUE(Diffusive::reads.density && Diffusive::reads.densityInverse);
+  EXPECT_FALSE(Diffusive::reads.viscosity);
 }
 
 TEST(ForceEvaluation, KeptNeighbourListsMatchReference1D) {

@@ -12,7 +12,7 @@ namespace sph::terms {
 class ArtificialViscosity {
  public:
   static constexpr std::string_view name = "artificial_viscosity";
-  static constexpr Reads reads{.etaInverse = true, .rhoSumInverse = true};
+  static constexpr Reads reads{.density = true, .etaInverse = true, .rhoSumInverse = true};
   static constexpr Writes writes{.bracket = true};
   static constexpr Flops flops{11, 0};  // mu_ij 1, Pi 7, compare-select 2, add 1
   explicit ArtificialViscosity(const TermParameters& t) : halfBeta_(0.5 * t.beta) {}

@@ -23,7 +23,7 @@ namespace sph::terms {
 class ConcentrationGradient {
  public:
   static constexpr std::string_view name = "";
-  static constexpr Reads reads{};
+  static constexpr Reads reads{.mass = true, .densityInverse = true};
   static constexpr Writes writes{};
   static constexpr double anticlumpingR = 0.2;  // Lind et al. 2012 after Monaghan 2000
   static constexpr int anticlumpingN = 4;

@@ -8,7 +8,7 @@ namespace sph::terms {
 
 struct ContinuityEquation {
   static constexpr std::string_view name = "continuity";
-  static constexpr Reads reads{};
+  static constexpr Reads reads{.mass = true};
   static constexpr Writes writes{.density = true};
   static constexpr Flops flops{1, 2};  // v.gradW; each side m v.gradW and its add
   template <class S, class V>

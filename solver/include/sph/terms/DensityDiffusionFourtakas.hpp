@@ -37,7 +37,8 @@ namespace sph::terms {
 class DensityDiffusionFourtakas {
  public:
   static constexpr std::string_view name = "density_diffusion_fourtakas";
-  static constexpr Reads reads{.etaInverse = true};
+  static constexpr Reads reads{
+      .mass = true, .density = true, .densityInverse = true, .etaInverse = true};
   static constexpr Writes writes{.density = true};
   // x_j 1, S 2 (gamma - 1) = 12 at gamma 7 (x_i's powers counted there too), rho0^2 g . r / K 3
   // (2-D), its division by S 1, the density difference 2, then Molteni & Colagrossi's 5; each

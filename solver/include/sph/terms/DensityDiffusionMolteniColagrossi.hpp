@@ -17,7 +17,8 @@ namespace sph::terms {
 class DensityDiffusionMolteniColagrossi {
  public:
   static constexpr std::string_view name = "density_diffusion_molteni_colagrossi";
-  static constexpr Reads reads{.etaInverse = true};
+  static constexpr Reads reads{
+      .mass = true, .density = true, .densityInverse = true, .etaInverse = true};
   static constexpr Writes writes{.density = true};
   // psi: delta c0 (h_i + h_j) 1, rho_i - rho_j 1, F r^2 1, the three products 3; each side
   // m / rho, times psi, add 3.

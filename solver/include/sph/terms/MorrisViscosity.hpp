@@ -11,7 +11,7 @@ namespace sph::terms {
 
 struct MorrisViscosity {
   static constexpr std::string_view name = "morris_viscosity";
-  static constexpr Reads reads{.etaInverse = true};
+  static constexpr Reads reads{.densityInverse = true, .viscosity = true, .etaInverse = true};
   static constexpr Writes writes{.viscous = true};
   static constexpr Flops flops{11, 0};  // Y 7, Q -= Y v_ij 2 x 2 (2-D)
   template <class S, class V>

@@ -1,7 +1,9 @@
 #pragma once
 // What a pair term reads and writes. A term is a small type (one header here) with
 //   name     the run file's word for it ("" for a term the simulation names itself),
-//   reads    which of the pair's shared values it needs beyond r_ij, v_ij and the kernel,
+//   reads    which fields of the two particles (Side) it needs, and which of the pair's shared
+//            values beyond r_ij, v_ij and the kernel (the pair loop lays out and loads those
+//            alone: a field no term of a set reads is 0 there),
 //   writes   which of the pair's sums it adds to,
 //   flops    its operations a pair, counted from its source (perf: the per-term cost table),
 //   pair(p, s)    its share of one pair: p the pair's values, s the sums it adds to (a term
@@ -76,6 +78,9 @@ struct PairSums {
 };
 
 struct Reads {
+  // the particles' fields (Side) beyond their positions, velocities and h
+  bool mass = false, density = false, densityInverse = false, pressure = false, viscosity = false;
+  // the pair's shared values beyond r_ij, v_ij and the kernel
   bool etaInverse = false, rhoSumInverse = false;
 };
 struct Writes {

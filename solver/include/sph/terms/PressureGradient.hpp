@@ -10,7 +10,7 @@ namespace sph::terms {
 
 struct PressureGradient {
   static constexpr std::string_view name = "pressure_gradient";
-  static constexpr Reads reads{};
+  static constexpr Reads reads{.pressure = true};
   static constexpr Writes writes{.bracket = true};
   // p_i/rho_i^2 + p_j/rho_j^2 1, and the pair force it starts: G = bracket F 1, Q = G r_ij 2;
   // each side m Q and its add, 2 x 2 (2-D).

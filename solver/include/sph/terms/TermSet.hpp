@@ -28,7 +28,15 @@ class TermSet {
  public:
   explicit TermSet(const TermParameters& t) : terms_(make<Ts>(t)...) {}
 
-  static constexpr Reads reads{(Ts::reads.etaInverse || ...), (Ts::reads.rhoSumInverse || ...)};
+  // What its terms read; the masses also for eq. (12)'s pair force below, the densities for
+  // 1/(rho_i + rho_j).
+  static constexpr Reads reads{true,
+                               (Ts::reads.density || ...) || (Ts::reads.rhoSumInverse || ...),
+                               (Ts::reads.densityInverse || ...),
+                               (Ts::reads.pressure || ...),
+                               (Ts::reads.viscosity || ...),
+                               (Ts::reads.etaInverse || ...),
+                               (Ts::reads.rhoSumInverse || ...)};
   static constexpr Writes writes{(Ts::writes.density || ...), (Ts::writes.smoothingLength || ...),
                                  (Ts::writes.bracket || ...), (Ts::writes.viscous || ...)};
   // The pair's shared values every set computes (DESIGN.md 1; quadratic kernel): h_ij 1,

@@ -8,7 +8,7 @@ namespace sph::terms {
 
 struct VariableSmoothingLength {
   static constexpr std::string_view name = "variable_h";
-  static constexpr Reads reads{};
+  static constexpr Reads reads{.mass = true, .densityInverse = true};
   static constexpr Writes writes{.smoothingLength = true};
   static constexpr Flops flops{0, 2};  // each side m v.gradW / rho, add (v.gradW: continuity's)
   template <class S, class V>
