@@ -67,7 +67,8 @@ void FixedWalls<D>::choose(InteractionSet<D>& set, double reach) const {
     // the choice is the particle-by-particle test's.
     const std::int64_t nCells = fluidCells_.cells();
     cellLo_.resize(nFluid), cellHi_.resize(nFluid);
-#pragma omp parallel for schedule(static) if (static_cast <std::int64_t>(nFluid) >= parallelFrom())
+    const bool parallelCells = static_cast<std::int64_t>(nFluid) >= parallelFrom();
+#pragma omp parallel for schedule(static) if (parallelCells)
     for (std::int64_t c = 0; c < nCells; ++c) {
       const int begin = fluidCells_.cellBegin(c), end = fluidCells_.cellEnd(c);
       if (begin == end) continue;
