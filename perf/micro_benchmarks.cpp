@@ -46,13 +46,26 @@ BENCHMARK(BM_CellListBuild)
     ->Range(1000, 1000000)
     ->Unit(benchmark::kMicrosecond);
 
-// One term combination alone (quadratic kernel, 1 thread, 2e4 particles): range(0) is
-// artificial viscosity + 2 morris viscosity + 4 variable h, the menu index of ForceEvaluation.cpp.
+// One term combination alone (quadratic kernel, 1 thread, 2e4 particles): range(0) is the menu
+// index of sph_bench's table: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 x
+// density diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al.); 24 + form: all three with
+// particle shifting's pair sums.
 void BM_Terms(benchmark::State& state) {
   const int t = static_cast<int>(state.range(0));
-  sph::TermSwitches terms{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0};
+  sph::TermSwitches terms{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0,
+                          static_cast<sph::DensityDiffusion>(t / 8)};
+  if (t >= 24) terms = {true, true, true, static_cast<sph::DensityDiffusion>(t - 24), true};
   Block2D& b = block(20000);
-  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, terms, 1.0);
+  // delta 0.1 (Molteni & Colagrossi 2009) with the block's c0 and EOS, g downwards
+  const sph::terms::TermParameters parameters{.beta = 1.0,
+                                              .diffusionDelta = 0.1,
+                                              .soundSpeed = b.phases[0].c0,
+                                              .rho0 = b.phases[0].rho0,
+                                              .bulkModulus = b.phases[0].bulkModulus(),
+                                              .gammaInteger = 7,
+                                              .g = {0.0, -9.81, 0.0},
+                                              .spacing = b.dx};
+  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, terms, parameters);
   omp_set_num_threads(1);
   for (auto _ : state) {
     force(b.set, b.out);
@@ -60,10 +73,11 @@ void BM_Terms(benchmark::State& state) {
   }
   std::string label;
   for (const auto& n : force.termNames()) label += (label.empty() ? "" : "+") + n;
+  if (terms.concentrationGradient) label += (label.empty() ? "" : "+") + std::string("shifting");
   state.SetLabel(label);
   setCounters(state, b.set.nFluid);
 }
-BENCHMARK(BM_Terms)->DenseRange(0, 7)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Terms)->DenseRange(0, 26)->Unit(benchmark::kMicrosecond);
 
 // Each kernel with every term (the dam break's menu entry), 1 thread, 2e4 particles.
 void BM_Kernels(benchmark::State& state) {
