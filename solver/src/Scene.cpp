@@ -308,7 +308,8 @@ void readDensityDiffusion(SceneTable& physics, Scene& s) {
                      SceneTable::fmt(gamma));
 }
 
-// physics.shifting (ParticleShifting.hpp): the form, its coefficient A and the surface threshold.
+// physics.shifting (ParticleShifting.hpp): the form, its coefficient A, the surface threshold and
+// the steps from one shift to the next.
 void readShifting(SceneTable& physics, Scene& s) {
   const std::string form = physics.string("shifting", "none");
   ShiftingParameters& p = s.shifting;
@@ -318,7 +319,7 @@ void readShifting(SceneTable& physics, Scene& s) {
   if (form != name(p.form))
     physics.fail("shifting", "unknown shifting '" + form + "' (expected none, lind or delta_plus)");
   if (p.form == ShiftingForm::none) {
-    for (const char* key : {"shifting_coefficient", "shifting_surface_threshold"})
+    for (const char* key : {"shifting_coefficient", "shifting_surface_threshold", "shifting_every"})
       if (physics.has(key)) physics.fail(key, "is set, but shifting is \"none\"");
     return;
   }
@@ -329,6 +330,9 @@ void readShifting(SceneTable& physics, Scene& s) {
     physics.fail("shifting_surface_threshold",
                  "must lie below the interior's div r = " + std::to_string(s.dimension) + ", got " +
                      SceneTable::fmt(p.surfaceThreshold));
+  const long every = physics.integer("shifting_every", 1);
+  if (every < 1) physics.fail("shifting_every", "must be a positive whole number of steps");
+  p.every = static_cast<int>(every);
 }
 
 // The domain as "[l0, u0] x [l1, u1]".
@@ -516,7 +520,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   SceneTable physics = top.sub("physics");
   physics.allow({"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h",
                  "density_diffusion", "density_diffusion_form", "shifting", "shifting_coefficient",
-                 "shifting_surface_threshold"});
+                 "shifting_surface_threshold", "shifting_every"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];

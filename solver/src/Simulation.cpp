@@ -603,13 +603,15 @@ struct Simulation<D>::Stepper {
   const BoxFaces<D> box;  // by value (see BoxFaces)
   Motion motion;          // of y* in its last stage
   std::optional<Failure> failure;
+  const bool shifts;  // particle shifting in this step (one in shifting.every)
 
   Stepper(Simulation& s, double step)
       : sim(s),
         dt(step),
         count(static_cast<std::int64_t>(s.y_.size())),
         parallel(count >= parallelFrom()),
-        box(s.bounds_, s.scene_.dx) {
+        box(s.bounds_, s.scene_.dx),
+        shifts(s.shifting_ && s.step_ % s.scene_.shifting.every == 0) {
     sim.yStar_.resize(s.y_.size());
   }
   integrators::StateFields<D, false> state() const {
@@ -630,12 +632,14 @@ struct Simulation<D>::Stepper {
   // Over several processes with velocity Verlet, particles may move to other processes on the
   // way (rates()): state(), rates() and trial() are to be taken again after it.
   void evaluate(double after) {
-    sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion, sim.shiftingSums_);
+    sim.rates(sim.yStar_, sim.t_ + after, sim.fStar_, motion, shifts && sim.shiftingSums_);
     count = static_cast<std::int64_t>(sim.y_.size()), parallel = count >= parallelFrom();
+    if (!shifts) return;
+    const double span = dt * sim.scene_.shifting.every;  // the steps the shift stands for
     if (sim.shiftingSums_)
-      (*sim.shifting_)(sim.set_, dt, sim.fStar_, sim.forces_, sim.shift_);
-    else if (sim.shifting_)
-      (*sim.shifting_)(sim.set_, dt, sim.shift_);
+      (*sim.shifting_)(sim.set_, span, sim.fStar_, sim.forces_, sim.shift_);
+    else
+      (*sim.shifting_)(sim.set_, span, sim.shift_);
   }
 
   // Stage::trial: update, wrap, motion. Returns true.
@@ -683,7 +687,7 @@ struct Simulation<D>::Stepper {
     const double t = sim.t_ + dt;
     const long step = sim.step_ + 1;
     const Simulation& checker = sim;
-    const Vec<D>* shift = sim.shifting_ ? sim.shift_.data() : nullptr;  // after the update
+    const Vec<D>* shift = shifts ? sim.shift_.data() : nullptr;  // after the update
 #pragma omp parallel if (parallel) reduction(+ : reflected) \
     reduction(max : deepest, hMax, moved2, grown) reduction(min : first)
     {

@@ -111,6 +111,18 @@ TEST(BadInput, NonPositiveShiftingCoefficient) {
                  "physics.shifting_coefficient", "must be positive");
 }
 
+TEST(BadInput, ShiftingEveryWithoutShifting) {
+  expectRejected("[physics]\n", "[physics]\nshifting_every = 5\n", "physics.shifting_every",
+                 "shifting is \"none\"");
+}
+
+TEST(BadInput, ShiftingEveryNotAPositiveWholeNumber) {
+  expectRejected("[physics]\n", "[physics]\nshifting = \"lind\"\nshifting_every = 0\n",
+                 "physics.shifting_every", "must be a positive whole number of steps");
+  expectRejected("[physics]\n", "[physics]\nshifting = \"lind\"\nshifting_every = 2.5\n",
+                 "physics.shifting_every", "must be a whole number");
+}
+
 TEST(BadInput, NonIntegerDimension) {
   expectRejected("dimension = 2\n", "dimension = 2.5\n", "dimension", "must be 1, 2 or 3");
 }

@@ -226,6 +226,42 @@ void runAddsTheShift(bool morris) {
   EXPECT_TRUE(same.lastShift().empty());
 }
 
+// shifting_every = 3: the first step shifts for three steps (D with 3 dt: three times the
+// shift of shifting_every = 1 from the same state, to round-off), and the next two move the
+// particles as a run without shifting does. The sums follow a cell order that the two runs may
+// not share after a step, so those positions agree to round-off only: 1e-9 dx, some 1e3 times
+// below the shift the column's step makes (checked).
+TEST(ParticleShifting, EveryKthStepShiftsForTheKSteps) {
+  constexpr double dx = 0.02;
+  sph::Simulation<2> plain(sph::parseScene(column("", true), "column"));
+  for (int k = 0; k < 20; ++k) ASSERT_FALSE(plain.advance());
+  const std::string lind = "shifting = \"lind\"\n";
+  sph::Simulation<2> each(sph::parseScene(column(lind, true), "column_lind"), plain.particles());
+  sph::Simulation<2> third(
+      sph::parseScene(column(lind + "shifting_every = 3\n", true), "column_lind_3"),
+      plain.particles());
+  ASSERT_FALSE(each.advance());
+  ASSERT_FALSE(third.advance());
+  const auto &one = each.lastShift(), &three = third.lastShift();
+  ASSERT_EQ(three.size(), one.size());
+  double largest = 0.0;
+  for (const auto& dr : one) largest = std::max(largest, dr.norm());
+  ASSERT_GT(largest, 1e3 * 1e-9 * dx);  // the tolerance below is far under a step's shift
+  // Round-off against the largest shift (measured up to 3.2e-14 of it): near the surface a shift
+  // is what is left of one across it, and that difference carries the rounding of the whole.
+  for (std::size_t i = 0; i < one.size(); ++i)
+    EXPECT_LE((three[i] - 3.0 * one[i]).norm(), 1e-12 * largest) << i;
+
+  sph::Simulation<2> unshifted(sph::parseScene(column("", true), "column"), third.particles());
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_FALSE(third.advance());
+    ASSERT_FALSE(unshifted.advance());
+  }
+  const auto &a = third.particles(), &b = unshifted.particles();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_LE((a.r[i] - b.r[i]).norm(), 1e-9 * dx) << i;
+}
+
 // A jittered block of particles in a box with free-slip walls below and at the sides (mirror
 // ghosts: a halo) and an open top (a free surface), moving at random velocities, h +-10 %.
 template <int D>

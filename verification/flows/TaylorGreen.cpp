@@ -108,8 +108,10 @@ TEST(TaylorGreen, DecayRatePerKernel) {
 // named model (Wendland C2, Fourtakas diffusion delta 0.1, delta-plus) +1.05 %, each tracking
 // exp(-8 pi^2 t / Re) within 5 % to t = 1 (end errors 0.024, 0.014, 0.014). Lind's shift (D
 // proportional to the particle's own speed, zero at the vortex's stagnation points) left the
-// Wendland vortex at +29.7 %, and Wendland at h/dx 2 without shifting at +47.3 %. The bar is the
-// issue's: the rate within 5 % of 8 pi^2 / Re at 50^2 or finer.
+// Wendland vortex at +29.7 %, and Wendland at h/dx 2 without shifting at +47.3 %. A delta-plus
+// shift once in 5 steps (shifting_every = 5: 5 dt a shift, c0 / U = 10 here) gave +2.86 % where
+// one a step gave +0.05 % (2026-12-05). The bar is the issue's: the rate within 5 % of
+// 8 pi^2 / Re at 50^2 or finer.
 TEST(TaylorGreen, DeltaPlusShiftingDecaysAtTheViscousRate) {
   Results r;
   const double T = 1.0, exact = 8 * pi * pi / kRe;
@@ -120,7 +122,9 @@ TEST(TaylorGreen, DeltaPlusShiftingDecaysAtTheViscousRate) {
   };
   for (const Model& m : {Model{"quadratic, delta-plus", "quadratic", shift},
                          Model{"wendland_c2, delta-plus", "wendland_c2", shift},
-                         Model{"named model", "wendland_c2", shift + diffusion}}) {
+                         Model{"named model", "wendland_c2", shift + diffusion},
+                         Model{"wendland_c2, delta-plus every 5 steps", "wendland_c2",
+                               shift + "shifting_every = 5\n"}}) {
     const Decay d = taylorGreen(m.kernel, 50, T, m.physics, hOverDx2);
     std::printf("%s (h/dx 2): decay rate %.4f (exact %.4f, %+.2f %%), within 5 %% until t = %.2f\n",
                 m.name.c_str(), d.rate, exact, 100 * (d.rate / exact - 1), d.trackedTo);
@@ -129,7 +133,7 @@ TEST(TaylorGreen, DeltaPlusShiftingDecaysAtTheViscousRate) {
     EXPECT_TRUE(
         r.check("Taylor-Green (Re 100, 50^2, h/dx 2) |decay rate / (8 pi^2 / Re) - 1|, " + m.name,
                 std::abs(d.rate / exact - 1), "<=", 0.05,
-                "issue 31's bar; measured 0.0006-0.031 (comment)"));
+                "issue 31's bar; measured 0.0005-0.031 (comment)"));
   }
 }
 

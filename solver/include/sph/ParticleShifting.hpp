@@ -31,6 +31,14 @@
 // gradient without the anti-clumping factor, g_i = sum_j V_j grad_i W_ij (their alpha = 0). A
 // particle with g_i = 0 there is not moved.
 //
+// Every few steps (shifting_every = k): one shift for k steps, with k dt in D. Lind et al. shift
+// once an incompressible step, whose length the flow speed sets (advective CFL); a weakly
+// compressible step is (c0 + U) / U times shorter (about 10 at Ma 0.1), and both forms move a
+// particle by an amount proportional to dt. k steps' shifts taken at once, from the state of
+// one of them, differ from k single ones by terms of order (k dt)^2, as long as k dt stays within
+// the advective step (k below about c0 / U_max). The pair sums, the marks near the surface and
+// the shift are then paid one step in k; the other steps evaluate the rates alone.
+//
 // Both pair sums are taken over the interaction set (fluid, periodic images, mirror ghosts, wall
 // particles), which completes the support at walls and across periodic faces: a lattice against a
 // mirror wall has grad C = 0 as in the interior. In a run they are a term of the pair loop
@@ -40,13 +48,16 @@
 // surface particles only. This class keeps a scalar gather of the same sums (each pair from both
 // sides, over a cell list of its own) as the tests' reference.
 //
-// Cost (perf record, dam break dx 0.01 with Fourtakas diffusion and Lind shifting to t = 0.1 s,
-// one thread, loaded 2-core VM): the trial evaluation with the sums 39 % of the time, the other,
-// without, 27 %; the marks near the surface 2 % and the per-particle rest 2 %. The dam break at
-// dx 0.005 to t = 0.3 s, 2 threads (--fixed-threads), CPU seconds of 5 alternated rounds, load
-// 8-11 on the 2 cores: with Fourtakas diffusion and Lind shifting 1.55 times the paper's scene
-// (medians 13.1 s against 8.2 s; rounds 1.49-1.82), above issue 31's 1.3. In the loop with the
-// sums the division of W_ij by W(dx) waits on the pair's square root, and accumulators spill.
+// Cost (perf record, the dam break at dx 0.005 with Fourtakas diffusion and Lind shifting to
+// t = 0.3 s, one thread): the trial evaluation with the sums 46 % of the time, the other, without,
+// 28 %; the marks near the surface 2 % and the per-particle rest 1 %. On its own (micro_benchmarks
+// BM_Terms/26 against /23, 2e4 particles, fastest of 15 alternated runs) the loop with the sums
+// takes 1.34 times the loop without; taking W(dx) as a constant instead of the division changed
+// nothing there (2708 against 2707 us): the cost lies in the rest, the five sums and their adds to
+// j's rate record (16 doubles wide with them, 4 without). End to end (perf/remedies_cost.sh, 2
+// threads, medians of 5 alternated rounds): the scene costs 1.59 times the paper's with a shift
+// every step and 1.20 times with one in 5 steps (shifting_every = 5), against 1.14 times with the
+// diffusion alone.
 
 #include <memory>
 #include <string_view>
@@ -71,6 +82,9 @@ struct ShiftingParameters {
   // div r below which a particle is on the free surface; 0: the dimension's default.
   double surfaceThreshold = 0.0;
   bool freeSurface = true;  // the tangential-only treatment near the surface (false: tests)
+  // Steps from one shift to the next: a shift every `every` steps, for all of them (dt there is
+  // `every` times the step's).
+  int every = 1;
   // Lind et al. 2012 after Monaghan 2000 (the pair loop's term: terms/ConcentrationGradient.hpp)
   static constexpr double anticlumpingR = terms::ConcentrationGradient::anticlumpingR;
   static constexpr int anticlumpingN = terms::ConcentrationGradient::anticlumpingN;
