@@ -97,4 +97,24 @@ struct PairFlops {
   }
 };
 
+// The menu entries the benchmarks time one by one: t = artificial viscosity + 2 Morris viscosity
+// + 4 variable h + 8 x density diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al.), and
+// 24 + form for all three with particle shifting's pair sums (t < 27).
+inline TermSwitches menuEntry(int t) {
+  if (t >= 24) return {true, true, true, static_cast<DensityDiffusion>(t - 24), true};
+  return {(t & 1) != 0, (t & 2) != 0, (t & 4) != 0, static_cast<DensityDiffusion>(t / 8)};
+}
+// The terms' parameters for the block: beta 1, density diffusion's delta 0.1 (Molteni &
+// Colagrossi 2009) with the block's c0 and EOS, g downwards.
+inline terms::TermParameters termParameters(const Block2D& b) {
+  return {.beta = 1.0,
+          .diffusionDelta = 0.1,
+          .soundSpeed = b.phases[0].c0,
+          .rho0 = b.phases[0].rho0,
+          .bulkModulus = b.phases[0].bulkModulus(),
+          .gammaInteger = 7,
+          .g = {0.0, -9.81, 0.0},
+          .spacing = b.dx};
+}
+
 }  // namespace sph::perf

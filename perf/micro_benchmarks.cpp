@@ -47,25 +47,11 @@ BENCHMARK(BM_CellListBuild)
     ->Unit(benchmark::kMicrosecond);
 
 // One term combination alone (quadratic kernel, 1 thread, 2e4 particles): range(0) is the menu
-// index of sph_bench's table: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 x
-// density diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al.); 24 + form: all three with
-// particle shifting's pair sums.
+// entry of sph_bench's table (Workload.hpp: menuEntry).
 void BM_Terms(benchmark::State& state) {
-  const int t = static_cast<int>(state.range(0));
-  sph::TermSwitches terms{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0,
-                          static_cast<sph::DensityDiffusion>(t / 8)};
-  if (t >= 24) terms = {true, true, true, static_cast<sph::DensityDiffusion>(t - 24), true};
+  const sph::TermSwitches terms = sph::perf::menuEntry(static_cast<int>(state.range(0)));
   Block2D& b = block(20000);
-  // delta 0.1 (Molteni & Colagrossi 2009) with the block's c0 and EOS, g downwards
-  const sph::terms::TermParameters parameters{.beta = 1.0,
-                                              .diffusionDelta = 0.1,
-                                              .soundSpeed = b.phases[0].c0,
-                                              .rho0 = b.phases[0].rho0,
-                                              .bulkModulus = b.phases[0].bulkModulus(),
-                                              .gammaInteger = 7,
-                                              .g = {0.0, -9.81, 0.0},
-                                              .spacing = b.dx};
-  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, terms, parameters);
+  sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, terms, sph::perf::termParameters(b));
   omp_set_num_threads(1);
   for (auto _ : state) {
     force(b.set, b.out);

@@ -388,19 +388,9 @@ int main(int argc, char** argv) {
     std::vector<double> x, y;
     std::printf("\n%5s %-70s %12s %8s %10s\n", "menu", "terms (quadratic kernel)", "ns/particle",
                 "flops/p", "GFlop/s");
-    // delta 0.1 (Molteni & Colagrossi 2009) with the block's c0 and EOS, g downwards
-    const sph::terms::TermParameters parameters{.beta = 1.0,
-                                                .diffusionDelta = 0.1,
-                                                .soundSpeed = b.phases[0].c0,
-                                                .rho0 = b.phases[0].rho0,
-                                                .bulkModulus = b.phases[0].bulkModulus(),
-                                                .gammaInteger = 7,
-                                                .g = {0.0, -9.81, 0.0},
-                                                .spacing = b.dx};
+    const sph::terms::TermParameters parameters = sph::perf::termParameters(b);
     for (int t = 0; t < 27; ++t) {
-      sph::TermSwitches sw{(t & 1) != 0, (t & 2) != 0, (t & 4) != 0,
-                           static_cast<sph::DensityDiffusion>(t / 8)};
-      if (t >= 24) sw = {true, true, true, static_cast<sph::DensityDiffusion>(t - 24), true};
+      const sph::TermSwitches sw = sph::perf::menuEntry(t);
       sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, sw, parameters);
       const double s = timePerCall([&] { force(b.set, b.out); });
       std::string label;
