@@ -104,6 +104,20 @@ def sweeps():
             "hydrostatic_tank", f"acoustic CFL factor, tank at rest to 4 s, {integ}", "density diffusion delta",
             [(c, y, dict(cfl=c, delta=d, integrator=integ, kernel="wendland_c2", h_over_dx=2.0, end_time=4.0))
              for c in (0.1, 0.2, 0.25, 0.4, 0.6) for y, d in enumerate(deltas)], [str(d) for d in deltas])
+    # CFL x artificial viscosity beta (eq. 10) and CFL x h/dx for each integrator: the dam break with the paper's
+    # kernel for beta (the impact is where beta works), the tank at rest to 4 s with Wendland C2 for h/dx (the
+    # named model's kernel; h/dx sets how many neighbours damp the lattice's modes).
+    for integ in INTEGRATORS:
+        few_betas = [0.0, 0.25, 1.0, 2.0]
+        out[f"cfl_beta_{integ}_dam_break"] = (
+            "dam_break", f"acoustic CFL factor, {integ}", "artificial viscosity beta",
+            [(c, y, dict(cfl=c, beta=b, integrator=integ)) for c in (0.1, 0.25, 0.4, 0.6, 1.0)
+             for y, b in enumerate(few_betas)], [str(b) for b in few_betas])
+        ratios = [1.33, 1.5, 2.0, 2.5]
+        out[f"cfl_h_over_dx_{integ}_long_hydrostatic_tank"] = (
+            "hydrostatic_tank", f"acoustic CFL factor, tank at rest to 4 s, {integ}", "h/dx",
+            [(c, y, dict(cfl=c, h_over_dx=r, integrator=integ, kernel="wendland_c2", end_time=4.0))
+             for c in (0.1, 0.2, 0.25, 0.4) for y, r in enumerate(ratios)], [str(r) for r in ratios])
     betas = [0.0, 0.1, 0.25, 0.5, 1.0, 1.5, 2.0]
     out["beta_dam_break"] = ("dam_break", "artificial viscosity beta (paper: 1)", "kernel",
                              [(b, k, dict(beta=b, kernel=kern)) for b in betas for k, kern in enumerate(KERNELS)],
