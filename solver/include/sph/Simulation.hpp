@@ -121,7 +121,8 @@ class Simulation {
   // The deepest such crossing so far [m] (at most dx/2), for the wall tests of issue 3.
   double maxReflectionDepth() const { return reflectionDepth_; }
   const ForceEvaluation<D>& forces() const { return forces_; }
-  // The scene's particle shifting (none: null) and the last step's shifts, by particle.
+  // The scene's particle shifting (none: null) and the shifts of the last step that shifted (one
+  // step in shifting.every), by particle.
   const ParticleShifting<D>* shifting() const { return shifting_.get(); }
   const LineVector<Vec<D>>& lastShift() const { return shift_; }
   std::vector<std::string> termNames() const;
