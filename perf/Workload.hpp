@@ -13,6 +13,7 @@
 #include "sph/ForceEvaluation.hpp"
 #include "sph/InteractionSet.hpp"
 #include "sph/Particles.hpp"
+#include "sph/terms/Menu.hpp"
 
 namespace sph::perf {
 
@@ -98,10 +99,13 @@ struct PairFlops {
 };
 
 // The menu entries the benchmarks time one by one: t = artificial viscosity + 2 Morris viscosity
-// + 4 variable h + 8 x density diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al.), and
-// 24 + form for all three with particle shifting's pair sums (t < 27).
+// + 4 variable h + 8 x density diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al., 3
+// Fourtakas et al.'s within each phase), and 32 + form for all three with particle shifting's pair
+// sums (t < terms::menuSize, 36).
 inline TermSwitches menuEntry(int t) {
-  if (t >= 24) return {true, true, true, static_cast<DensityDiffusion>(t - 24), true};
+  constexpr int rates = static_cast<int>(terms::ratesEntries);
+  static_assert(rates == 32 && terms::menuSize == 36);
+  if (t >= rates) return {true, true, true, static_cast<DensityDiffusion>(t - rates), true};
   return {(t & 1) != 0, (t & 2) != 0, (t & 4) != 0, static_cast<DensityDiffusion>(t / 8)};
 }
 // The terms' parameters for the block: beta 1, density diffusion's delta 0.1 (Molteni &

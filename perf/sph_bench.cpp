@@ -380,8 +380,8 @@ int main(int argc, char** argv) {
     Json terms{
         "cost of each term combination (2e4 particles, 1 thread)",
         "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 x density "
-        "diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al.); 24 + form: all three with "
-        "particle shifting's pair sums",
+        "diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al., 3 Fourtakas et al. within "
+        "each phase); 32 + form: all three with particle shifting's pair sums",
         "ns per particle evaluation",
         "",
         {}};
@@ -389,7 +389,7 @@ int main(int argc, char** argv) {
     std::printf("\n%5s %-70s %12s %8s %10s\n", "menu", "terms (quadratic kernel)", "ns/particle",
                 "flops/p", "GFlop/s");
     const sph::terms::TermParameters parameters = sph::perf::termParameters(b);
-    for (int t = 0; t < 27; ++t) {
+    for (int t = 0; t < static_cast<int>(sph::terms::menuSize); ++t) {
       const sph::TermSwitches sw = sph::perf::menuEntry(t);
       sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, sw, parameters);
       const double s = timePerCall([&] { force(b.set, b.out); });

@@ -263,7 +263,7 @@ void FixedWalls<D>::sumListed(InteractionSet<D>& set, std::size_t base) const {
       const std::size_t e = base + static_cast<std::size_t>(q);
       set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
       set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
-      set.h[e] = h_, set.mu[e] = phase_.mu, set.source[e] = -1;
+      set.h[e] = h_, set.mu[e] = phase_.mu, set.rho0[e] = phase_.rho0, set.source[e] = -1;
     }
   });
 }

@@ -71,7 +71,7 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms,
       terms_(terms),
       parameters_(parameters),
       work_(std::make_shared<Workspace>()) {
-  static_assert(terms::optionalSubsets == 8 && terms::DensityDiffusionForms::size == 2,
+  static_assert(terms::optionalSubsets == 8 && terms::DensityDiffusionForms::size == 3,
                 "menuIndex covers every optional term and every form");
   TermSwitches rates = terms;
   rates.concentrationGradient = false;

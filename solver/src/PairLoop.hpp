@@ -186,15 +186,16 @@ struct ForceEvaluation<D>::Workspace {
     // the halo. For D <= 2, the same per entry as one 64-byte record {x, y, v_x, v_y, h, rho,
     // p/rho^2, m} (y = v_y = 0 in 1-D): pass 2 loads four neighbours' records as eight vectors
     // and transposes them, instead of gathering each field. For every D, a 16-byte record {mu,
-    // 1/rho}. Each thread has a copy of its own of the next band (the first of the next
-    // thread's), which it reads too: when the other thread copied it in, each store went to a
-    // line that this thread's core had read, and when the two cores share no cache each such
-    // store waited for the other core (makeBlock, two threads, rdtsc: that band's copy-in at 1e4
-    // 37-41 us against 7.6-7.9 when the cores share a cache; with the copy 2.1-3.3 us, and the wait
-    // for it at the barrier 32-37 -> 0.4-1.4 us; at 1e3 9.8-10.7 -> 0.6-1.4 us). The rates stay one
-    // array, zeroed by each entry's own thread (by the thread that placed it, at a build). Unset
-    // arrays: a thread's copy costs memory for its part only (plus whole 2 MiB pages at its ends:
-    // 596-607 -> 632-639 B a particle at 1e6).
+    // 1/rho}, or {mu, 1/rho, rho0, 0} of 32 bytes where a term reads the rest density. Each thread
+    // has a copy of its own of the next band (the first of the next thread's), which it reads too:
+    // when the other thread copied it in, each store went to a line that this thread's core had
+    // read, and when the two cores share no cache each such store waited for the other core
+    // (makeBlock, two threads, rdtsc: that band's copy-in at 1e4 37-41 us against 7.6-7.9 when the
+    // cores share a cache; with the copy 2.1-3.3 us, and the wait for it at the barrier 32-37 ->
+    // 0.4-1.4 us; at 1e3 9.8-10.7 -> 0.6-1.4 us). The rates stay one array, zeroed by each entry's
+    // own thread (by the thread that placed it, at a build). Unset arrays: a thread's copy costs
+    // memory for its part only (plus whole 2 MiB pages at its ends: 596-607 -> 632-639 B a particle
+    // at 1e6).
     std::array<UnsetLineVector<double>, D> x, v;
     UnsetLineVector<double> h, rho, pOverRho2, m;
     UnsetLineVector<std::int64_t> receives;
@@ -336,17 +337,19 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   // width a power of two, so that 16 j times it over 16 is an addressing mode's scale.
   constexpr int own = Terms::template ownSums<D>, rateUsed = (D <= 2 ? 4 : 5) + own;
   // The fields a particle's record holds follow from what the terms read (terms::Reads): the
-  // extra record {mu, 1/rho} only where a term reads either, and in 3-D each of rho, p/rho^2
-  // and m only where read. (The 2-D record of 8 keeps every field: its loads are two whole
-  // transposes whatever they hold.)
+  // extra record {mu, 1/rho} only where a term reads either or the rest density (then {mu,
+  // 1/rho, rho0, 0}), and in 3-D each of rho, p/rho^2 and m only where read. (The 2-D record of
+  // 8 keeps every field: its loads are two whole transposes whatever they hold.)
   constexpr terms::Reads reads = Terms::reads;
-  constexpr bool extraRecord = reads.viscosity || reads.densityInverse;
-  constexpr int recordSize = 8, extraSize = 2,
+  constexpr bool extraRecord = reads.viscosity || reads.densityInverse || reads.restDensity;
+  constexpr int recordSize = 8, extraSize = reads.restDensity ? 4 : 2,
                 rateWidth = rateUsed <= 4   ? 4
                             : rateUsed <= 8 ? 8
                                             : 16;
   constexpr int ownAt = D <= 2 ? 4 : 5;  // where the own sums start in a rate record
   static_assert(rateUsed <= rateWidth);
+  if (reads.restDensity && set.rho0.size() < n)
+    throw std::logic_error("pair loop: a term reads the rest density, and the set has none");
   w.rate = grown(w.rateStore, rateWidth * nPadded);
   if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
     w.scratch.resize(omp_get_max_threads());
@@ -460,6 +463,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         view.h[k] = hMax, view.receives[k] = 0;
         double* e = view.extra + extraSize * k;
         e[0] = 0.0, e[1] = 1.0;
+        if constexpr (extraSize > 2) e[2] = e[3] = 0.0;
         if constexpr (D <= 2) {
           double* r = view.record + recordSize * k;
           r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
@@ -496,7 +500,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
       const Vec<D>* sx = set.x.data();
       const Vec<D>* sv = set.v.data();
       const double *sRho = set.rho.data(), *sM = set.m.data(), *sH = set.h.data(),
-                   *sP = set.p.data(), *sMu = set.mu.data();
+                   *sP = set.p.data(), *sMu = set.mu.data(), *sRho0 = set.rho0.data();
       std::array<double*, D> wx, wv;
       for (int a = 0; a < D; ++a) wx[a] = view.x[a].data(), wv[a] = view.v[a].data();
       double *wh = view.h.data(), *wRho = view.rho.data(), *wM = view.m.data(),
@@ -509,7 +513,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         // Pass 1 reads x and h by field; the rest is read from the records in 1-D and 2-D (v,
         // rho, p/rho^2, m by field only in 3-D), and with reused lists, which skip pass 1,
         // everything.
-        const terms::Side<double> f = terms::sideOf(sM[s], sRho[s], sP[s], sMu[s]);
+        const terms::Side<double> f =
+            terms::sideOf(sM[s], sRho[s], sP[s], sMu[s], reads.restDensity ? sRho0[s] : 0.0);
         const double rho = f.rho, rhoInv = f.rhoInv, m = f.m, h = sH[s], pr = f.pOverRho2;
         if (fields) {
           for (int a = 0; a < D; ++a) wx[a][k] = sx[s][a];
@@ -518,6 +523,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         if constexpr (extraRecord) {
           double* e = extras + extraSize * k;
           e[0] = f.mu, e[1] = rhoInv;
+          if constexpr (reads.restDensity) e[2] = f.rho0, e[3] = 0.0;
         }
         if (rates) {
           double* rate = rates + rateWidth * k;
@@ -617,6 +623,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         }
         const double* ei = extra + extraSize * i;
         const double mui = extraRecord ? ei[0] : 0.0, rhoInvi = extraRecord ? ei[1] : 0.0;
+        const double rho0i = reads.restDensity ? ei[2] : 0.0;
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
         Vd accOwn[own > 0 ? own : 1] = {};            // the own sums
 
@@ -680,8 +687,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
 
         // Pass 2: the terms, one vector of neighbours at a time.
         for (int k = 0; k < count; k += lanes) {
-          // The list holds 16 j for neighbour j (the byte offset of its {mu, 1/rho} record), so
-          // that each of j's records is at base + 1, 2 or 4 times that: an addressing mode, not a
+          // The list holds 16 j for neighbour j (the byte offset of a 16-byte record), so that
+          // each of j's records is at base + 1, 2 or 4 times that: an addressing mode, not a
           // sign extension and a shift a neighbour and array (174 -> 149 instructions a vector,
           // 1.5 % off the force evaluation at 1e4).
           const int* jj = nb + k;
@@ -710,13 +717,19 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
             if constexpr (reads.pressure) prj = gather(prs);
             if constexpr (reads.mass) mj = gather(ms);
           }
-          Vd muj{}, rhoInvj{};
+          Vd muj{}, rhoInvj{}, rho0j{};
           if constexpr (extraRecord) {
-            static_assert(extraSize * sizeof(double) == 16);
-            const Vd t0 = load2(at(extra, 1, 0), at(extra, 1, 2)),
-                     t1 = load2(at(extra, 1, 1), at(extra, 1, 3));
+            constexpr std::size_t scale = extraSize * sizeof(double) / 16;  // 1 or 2
+            static_assert(scale * 16 == extraSize * sizeof(double) && (scale == 1 || scale == 2));
+            const Vd t0 = load2(at(extra, scale, 0), at(extra, scale, 2)),
+                     t1 = load2(at(extra, scale, 1), at(extra, scale, 3));
             muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6);
             rhoInvj = __builtin_shufflevector(t0, t1, 1, 5, 3, 7);
+            if constexpr (reads.restDensity) {
+              const Vd t2 = load2(at(extra, scale, 0) + 2, at(extra, scale, 2) + 2),
+                       t3 = load2(at(extra, scale, 1) + 2, at(extra, scale, 3) + 2);
+              rho0j = __builtin_shufflevector(t2, t3, 0, 4, 2, 6);
+            }
           }
           // r_ij, v_ij by component.
           const Vd rx = xi[0] - xj[0], vx = vi[0] - vj[0];
@@ -736,8 +749,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           const Vd r = inv.r, hInv = 2.0 * inv.a;  // 1 / h_ij
           const Vd gradW = Kernel::template gradOverR<D>(r, inv.rInv, hInv);
           const Vd F = Skinned ? (inside ? gradW : Vd{}) : gradW;  // grad_i W_ij = F r_ij
-          const terms::PairValues<double, Vd> pair{{mi, rhoi, rhoInvi, pri, mui},
-                                                   {mj, rhoj, rhoInvj, prj, muj},
+          const terms::PairValues<double, Vd> pair{{mi, rhoi, rhoInvi, pri, mui, rho0i},
+                                                   {mj, rhoj, rhoInvj, prj, muj, rho0j},
                                                    rx,
                                                    ry,
                                                    rz,

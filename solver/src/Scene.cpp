@@ -278,9 +278,11 @@ TimeIntegrator integratorKind(SceneTable& t, const std::string& v) {
 }
 
 // physics.density_diffusion (delta) and its form. Both forms diffuse density differences, and
-// across a phase interface the density jumps by the phases' rho0, so one phase only
-// (terms/DensityDiffusion*.hpp); Fourtakas et al.'s hydrostatic difference takes the secant of
-// x^gamma, a sum of gamma powers, so gamma must be a whole number.
+// across a phase interface the density jumps by the phases' rho0: with several phases Fourtakas
+// et al.'s form diffuses within each phase (terms/DensityDiffusionFourtakasPhases.hpp), which
+// takes each phase's K from its rho0 and the phases' one c0 and gamma; Molteni & Colagrossi's
+// takes one phase. Fourtakas et al.'s hydrostatic difference takes the secant of x^gamma, a sum
+// of gamma powers, so gamma must be a whole number.
 void readDensityDiffusion(SceneTable& physics, Scene& s) {
   s.diffusionDelta = physics.nonNegative("density_diffusion", 0.0);
   const std::string form = physics.string("density_diffusion_form", "molteni_colagrossi");
@@ -294,12 +296,25 @@ void readDensityDiffusion(SceneTable& physics, Scene& s) {
                  "unknown form '" + form + "' (expected molteni_colagrossi or fourtakas)");
   s.terms.densityDiffusion = s.diffusionDelta > 0.0 ? chosen : DensityDiffusion::none;
   if (s.terms.densityDiffusion == DensityDiffusion::none) return;
-  if (s.phases.size() > 1)
-    physics.fail(
-        "density_diffusion",
-        "density diffusion diffuses the density jump at a phase interface; the scene has " +
-            std::to_string(s.phases.size()) + " phases, it may have one");
-  const double gamma = s.phases[0].gamma;
+  const Phase& first = s.phases[0];
+  if (s.phases.size() > 1) {
+    if (chosen == DensityDiffusion::molteniColagrossi)
+      physics.fail("density_diffusion",
+                   "\"molteni_colagrossi\" diffuses the density jump at a phase interface; the "
+                   "scene has " +
+                       std::to_string(s.phases.size()) +
+                       " phases: density_diffusion_form = \"fourtakas\" diffuses within each");
+    for (const Phase& p : s.phases)
+      if (p.c0 != first.c0 || p.gamma != first.gamma)
+        physics.fail(
+            "density_diffusion",
+            "with several phases the density diffusion takes one c0 and gamma, and phase '" +
+                p.name + "' has c0 " + SceneTable::fmt(p.c0) + ", gamma " +
+                SceneTable::fmt(p.gamma) + " against '" + first.name + "''s " +
+                SceneTable::fmt(first.c0) + ", " + SceneTable::fmt(first.gamma));
+    s.terms.densityDiffusion = DensityDiffusion::fourtakasPhases;
+  }
+  const double gamma = first.gamma;
   if (chosen == DensityDiffusion::fourtakas &&
       (gamma != std::floor(gamma) || gamma < 1.0 || gamma > 15.0))
     physics.fail("density_diffusion_form",

@@ -80,12 +80,17 @@ Boundaries<D> boundariesOf(const Scene& s) {
 // above it. Fourtakas et al.'s density diffusion (terms/DensityDiffusionFourtakas.hpp) reads that
 // as a density deficit below the floor, which drains the bottom layer (a tank at rest, H/dx 20,
 // Wendland: the bottom pressure 19 % low by t sqrt(g/H) = 20). With that form the ghost takes
-// the density of its pressure through the inverse Tait EOS (one phase), as the fluid has; the
-// paper's scenes, without it, keep the source's density.
+// the density of its pressure through the inverse Tait EOS of its phase (the phase of its rest
+// density), as the fluid has; the paper's scenes, without it, keep the source's density.
 template <int D>
-void ghostDensitiesFromPressure(const Phase& water, InteractionSet<D>& set) {
-  for (std::size_t i = set.nFluid; i < set.size(); ++i)
-    set.rho[i] = TaitEquationOfState::density(set.p[i], water);
+void ghostDensitiesFromPressure(const std::vector<Phase>& phases, InteractionSet<D>& set) {
+  Phase phase = phases[0];
+  for (std::size_t i = set.nFluid; i < set.size(); ++i) {
+    if (set.rho0[i] != phase.rho0)
+      for (const Phase& p : phases)
+        if (p.rho0 == set.rho0[i]) phase = p;
+    set.rho[i] = TaitEquationOfState::density(set.p[i], phase);
+  }
 }
 
 // The terms' parameters: density diffusion takes c0 (and, in Fourtakas et al.'s form, the
@@ -287,8 +292,10 @@ void Simulation<D>::buildSet(const SetFluid<D>& fluid, double reach, HaloMembers
   boundary_->build(fluid, scene_.phases, reach, members, set);
   // (hydrostatic ghost pressure comes with mirror ghosts only: Scene refuses it with wall
   // particles)
-  if (scene_.hydrostaticGhosts && scene_.terms.densityDiffusion == DensityDiffusion::fourtakas)
-    ghostDensitiesFromPressure(scene_.phases[0], set);
+  if (scene_.hydrostaticGhosts &&
+      (scene_.terms.densityDiffusion == DensityDiffusion::fourtakas ||
+       scene_.terms.densityDiffusion == DensityDiffusion::fourtakasPhases))
+    ghostDensitiesFromPressure(scene_.phases, set);
 }
 
 template <int D>

@@ -63,7 +63,7 @@ sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
     s.p.push_back(sph::TaitEquationOfState::pressure(rho, ph));
     s.m.push_back(rho * std::pow(dx, D) * (0.9 + 0.2 * u(rng)));
     s.h.push_back(1.33 * dx * (0.8 + 0.4 * u(rng)));
-    s.mu.push_back(ph.mu);
+    s.mu.push_back(ph.mu), s.rho0.push_back(ph.rho0);
     s.source.push_back(i);
   }
   s.nFluid = n - 50;
@@ -96,11 +96,11 @@ sph::terms::TermParameters parametersFor(int n = 300) {
           .spacing = std::pow(1.0 / n, 1.0 / D)};
 }
 // Every subset of the three optional terms times each density diffusion form (none, Molteni &
-// Colagrossi, Fourtakas et al.), then all three with shifting's pair sums and each form: the menu
-// of terms/Menu.hpp.
-constexpr int menuSize = 27;
+// Colagrossi, Fourtakas et al., Fourtakas et al. within each phase), then all three with
+// shifting's pair sums and each form: the menu of terms/Menu.hpp.
+constexpr int menuSize = 36;
 sph::TermSwitches switchesOf(int combo) {
-  if (combo >= 24) return {true, true, true, static_cast<sph::DensityDiffusion>(combo - 24), true};
+  if (combo >= 32) return {true, true, true, static_cast<sph::DensityDiffusion>(combo - 32), true};
   return {(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0,
           static_cast<sph::DensityDiffusion>(combo / 8)};
 }
@@ -112,17 +112,18 @@ std::string describe(sph::TermSwitches t) {
          " shifting_sums=" + std::to_string(t.concentrationGradient);
 }
 
-// Fourtakas et al.'s hydrostatic density difference rho_ji^H of the pair, by powers.
+// Fourtakas et al.'s hydrostatic density difference rho_ji^H of the pair, by powers, for a phase
+// of rest density rho0 and bulk modulus K.
 template <int D>
 double hydrostaticDifference(const sph::InteractionSet<D>& s, std::size_t i, std::size_t j,
-                             const sph::terms::TermParameters& par) {
-  const double xi = s.rho[i] / par.rho0, xj = s.rho[j] / par.rho0;
+                             const sph::terms::TermParameters& par, double rho0, double K) {
+  const double xi = s.rho[i] / rho0, xj = s.rho[j] / rho0;
   double S = 0.0;
   for (int k = 0; k < par.gammaInteger; ++k)
     S += std::pow(xj, k) * std::pow(xi, par.gammaInteger - 1 - k);
   double gr = 0.0;
   for (int a = 0; a < D; ++a) gr += par.g[a] * (s.x[i][a] - s.x[j][a]);
-  return -par.rho0 * par.rho0 * gr / (par.bulkModulus * S);
+  return -rho0 * rho0 * gr / (K * S);
 }
 
 template <int D>
@@ -161,10 +162,17 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
         sums[2 * D] -= V * rij.dot(gradW), scales[2 * D] += std::abs(V * rij.dot(gradW));
       }
       ref.scaleRho[i] += std::abs(continuity);
-      if (t.densityDiffusion != sph::DensityDiffusion::none) {
-        const double hydrostatic = t.densityDiffusion == sph::DensityDiffusion::fourtakas
-                                       ? hydrostaticDifference<D>(s, i, j, par)
-                                       : 0.0;
+      // Within each phase only (terms/DensityDiffusionFourtakasPhases.hpp), with that phase's
+      // K = rho0 c0^2 / gamma at the terms' c0.
+      const bool byPhase = t.densityDiffusion == sph::DensityDiffusion::fourtakasPhases;
+      if (t.densityDiffusion != sph::DensityDiffusion::none &&
+          (!byPhase || s.rho0[i] == s.rho0[j])) {
+        const double Ki = s.rho0[i] * par.soundSpeed * par.soundSpeed / par.gammaInteger;
+        const double hydrostatic =
+            t.densityDiffusion == sph::DensityDiffusion::fourtakas
+                ? hydrostaticDifference<D>(s, i, j, par, par.rho0, par.bulkModulus)
+            : byPhase ? hydrostaticDifference<D>(s, i, j, par, s.rho0[i], Ki)
+                      : 0.0;
         const sph::Vec<D> psi = 2.0 * (s.rho[j] - s.rho[i] - hydrostatic) * (-rij) / (r * r + eta2);
         const double c =
             par.diffusionDelta * hij * par.soundSpeed * psi.dot(gradW) * s.m[j] / s.rho[j];
@@ -258,7 +266,7 @@ void allCombinations(unsigned seed) {
     }
     results.check("max |code - O(N^2) reference| / sum|pair terms|, " +
                       std::string(sph::name(kind)) + ", D=" + std::to_string(D) +
-                      ", all 27 term combinations",
+                      ", all 36 term combinations",
                   worst, "<=", tolerance, "summation round-off bound (n u sum|x_k|, Higham 2002)");
   }
 }
@@ -322,7 +330,7 @@ void keptLists(unsigned seed) {
     EXPECT_LE(worst, tolerance) << what;
     EXPECT_GE(worstFar, 1e-3) << what;
     results.check("kept neighbour lists, moved within the skin: max error / sum|pair terms|, " +
-                      what + ", all 27 term combinations",
+                      what + ", all 36 term combinations",
                   worst, "<=", tolerance, "summation round-off bound, as the full build");
   }
 }

@@ -50,6 +50,37 @@ TEST(SceneTerms, DensityDiffusionIsRefusedWithTwoPhases) {
   EXPECT_NE(r.output.find("2 phases"), std::string::npos) << r.output;
 }
 
+// With several phases Fourtakas et al.'s form diffuses within each
+// (terms/DensityDiffusionFourtakasPhases.hpp), named so in the run file; the phases must share
+// c0 and gamma, else the scene is refused naming the phase.
+std::string twoPhases(const std::string& dir, double oilC0) {
+  std::string text =
+      readText(withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"", dir));
+  text.replace(text.find("[[fluid]]"), 9,
+               "[[phase]]\nname = \"oil\"\nrho0 = 900.0\nc0 = " + std::to_string(oilC0) +
+                   "\nmu = 1.0e-3\n\n[[fluid]]\nphase = \"water\"");
+  const std::string path = dir + "/two_phases.toml";
+  writeText(path, text);
+  return path;
+}
+
+TEST(SceneTerms, FourtakasFormDiffusesWithinEachOfTwoPhases) {
+  const std::string dir = freshOutputDirectory();
+  ASSERT_EQ(runSph("run '" + twoPhases(dir, 20.0) + "' --quiet --out '" + dir + "'").exitCode, 0);
+  const auto terms = stringAttribute(dir + "/small_tank.h5", "/", "terms");
+  ASSERT_TRUE(terms.has_value());
+  EXPECT_NE(terms->find("density_diffusion_fourtakas_phases"), std::string::npos) << *terms;
+  EXPECT_EQ(stringAttribute(dir + "/small_tank.h5", "/", "status"), "stable");
+}
+
+TEST(SceneTerms, FourtakasFormIsRefusedForPhasesOfOtherSoundSpeeds) {
+  const std::string dir = freshOutputDirectory();
+  const ProgramResult r = runSph("check '" + twoPhases(dir, 25.0) + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("'physics.density_diffusion'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("phase 'oil' has c0 25"), std::string::npos) << r.output;
+}
+
 // The form key picks Fourtakas et al.'s (2019) term: named in the run file, and a tank at rest
 // starting hydrostatic changes (the forms differ where the kernel is cut).
 TEST(SceneTerms, FourtakasFormRunsWhenTheSceneAsksForIt) {

@@ -21,6 +21,7 @@ enum class DensityDiffusion : unsigned {
   none,
   molteniColagrossi,  // Molteni & Colagrossi (2009)
   fourtakas,          // Fourtakas et al. (2019): the hydrostatic part subtracted
+  fourtakasPhases,    // Fourtakas et al.'s within each of several phases
 };
 // The optional terms, in the order of terms::OptionalTerms, and the slots' choices.
 struct TermSwitches {

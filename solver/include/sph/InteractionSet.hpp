@@ -20,7 +20,8 @@ template <int D>
 struct InteractionSet {
   LineVector<Vec<D>> x, v;
   LineVector<double> rho, p, m, h, mu;
-  LineVector<int> source;  // the fluid particle an entry stands for
+  LineVector<double> rho0;  // the rest density of each entry's phase
+  LineVector<int> source;   // the fluid particle an entry stands for
   std::size_t nFluid = 0;
   // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step;
   // a cache line each, so that two threads' appends do not contend for one), and the runs of
@@ -71,7 +72,7 @@ struct InteractionSet {
   }
   void resize(std::size_t n) {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
-    source.resize(n);
+    rho0.resize(n), source.resize(n);
   }
 };
 
@@ -91,7 +92,8 @@ struct SetFluid {
   std::size_t size() const { return count; }
 };
 
-// Copies the fluid state (pressure from the Tait EOS, viscosity from the phase) into `set`, then
+// Copies the fluid state (pressure from the Tait EOS, viscosity and rest density from the phase)
+// into `set`, then
 // appends the halo: for each axis in turn, every entry so far within `reach` of a periodic face
 // gets an image shifted by the period, and of a wall face a ghost mirrored across it (Libersky et
 // al. 1993; Colagrossi & Landrini 2003). Working axis by axis mirrors ghosts again at corners.

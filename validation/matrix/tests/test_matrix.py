@@ -86,7 +86,7 @@ def test_a_paper_check_starts_after_the_named_runs_of_its_case():
             assert set(after[c.name]) == named[c.case], c.name
         else:
             assert c.name not in after, c.name
-    assert "two_fluids" not in after and "two_fluids_quick" not in after  # the paper's model alone (no twin)
+    assert "two_fluids_named" in after["two_fluids_quick"] and "two_fluids_quick_named" not in after
     assert "dam_break_quick_named" not in after and "dam_break_lobovsky_named" in after["dam_break_quick"]
 
 

@@ -26,13 +26,29 @@
 // the hydrostatic field p = p0 + rho0 |g| (H - y) that the scenes start from. S needs no power
 // and no division by x_j - x_i: gamma - 1 multiply-adds (Horner in x_j). delta and c0 as in
 // Molteni & Colagrossi's term (delta ~ 0.1); eta^2 = 0.01 h_ij^2 (DESIGN.md 1), h = h_ij. One
-// phase only: the density jump at a phase interface is no hydrostatic difference. A wall's
+// phase only: the density jump at a phase interface is no hydrostatic difference (with several
+// phases, DensityDiffusionFourtakasPhases.hpp diffuses within each). A wall's
 // ghosts must carry the hydrostatic density too, or the term drains the fluid beside the wall
 // (Fourtakas et al. build their boundary stencil for that): with ghost_pressure = "hydrostatic"
 // the simulation gives each ghost the density of its pressure (Simulation.cpp).
 #include "sph/terms/PairValues.hpp"
 
 namespace sph::terms {
+
+// -(rho_ji^T - rho_ji^H) = rho_i - rho_j + rho_ji^H of the header, rho_ji^H = -gr / S, for the
+// pair's densities, 1/rho0 of their phase and gr = rho0^2 g . r_ij / K.
+template <class S, class V, class R>
+V fourtakasDifference(S rhoI, V rhoJ, R rho0Inverse, V gr, int gamma) {
+  const S xi = rhoI * rho0Inverse;
+  const V xj = rhoJ * rho0Inverse;
+  V secant = V{} + 1.0;  // S of the header, by Horner in x_j: coefficient x_i^k of x_j^(gamma-1-k)
+  S xiPower = 1.0;
+  for (int k = 1; k < gamma; ++k) {
+    xiPower *= xi;
+    secant = secant * xj + xiPower;
+  }
+  return (rhoI - rhoJ) - gr / secant;
+}
 
 class DensityDiffusionFourtakas {
  public:
@@ -53,18 +69,8 @@ class DensityDiffusionFourtakas {
                      t.rho0 * t.rho0 / t.bulkModulus * t.g[2]} {}
   template <class S, class V>
   void pair(const PairValues<S, V>& p, PairSums<V>& s) const {
-    const S xi = p.i.rho * rho0Inverse_;
-    const V xj = p.j.rho * rho0Inverse_;
-    V secant =
-        V{} + 1.0;  // S of the header, by Horner in x_j: coefficient x_i^k of x_j^(gamma-1-k)
-    S xiPower = 1.0;
-    for (int k = 1; k < gamma_; ++k) {
-      xiPower *= xi;
-      secant = secant * xj + xiPower;
-    }
     const V gr = hydrostatic_[0] * p.rx + hydrostatic_[1] * p.ry + hydrostatic_[2] * p.rz;
-    // -(rho_ji^T - rho_ji^H) = rho_i - rho_j + rho_ji^H, rho_ji^H = -gr / S.
-    const V difference = (p.i.rho - p.j.rho) - gr / secant;
+    const V difference = fourtakasDifference(p.i.rho, p.j.rho, rho0Inverse_, gr, gamma_);
     const V psi = (deltaC0_ * p.hSum) * difference * (p.F * p.r2) * p.rEta2Inv;
     s.rhoI += p.j.m * p.j.rhoInv * psi;
     s.rhoJ -= p.i.m * p.i.rhoInv * psi;

@@ -11,6 +11,7 @@
 #include "sph/terms/ConcentrationGradient.hpp"
 #include "sph/terms/ContinuityEquation.hpp"
 #include "sph/terms/DensityDiffusionFourtakas.hpp"
+#include "sph/terms/DensityDiffusionFourtakasPhases.hpp"
 #include "sph/terms/DensityDiffusionMolteniColagrossi.hpp"
 #include "sph/terms/MorrisViscosity.hpp"
 #include "sph/terms/PressureGradient.hpp"
@@ -28,8 +29,8 @@ using RequiredTerms = TermList<ContinuityEquation, PressureGradient, BodyForce>;
 // Bit k of a menu index's optional part switches on the k-th (TermSwitches follows this order).
 using OptionalTerms = TermList<ArtificialViscosity, MorrisViscosity, VariableSmoothingLength>;
 // The density diffusion slot: none (0) or the form at 1, 2, ... (TermSwitches::DensityDiffusion).
-using DensityDiffusionForms =
-    TermList<DensityDiffusionMolteniColagrossi, DensityDiffusionFourtakas>;
+using DensityDiffusionForms = TermList<DensityDiffusionMolteniColagrossi, DensityDiffusionFourtakas,
+                                       DensityDiffusionFourtakasPhases>;
 inline constexpr unsigned optionalSubsets = 1u << OptionalTerms::size;
 inline constexpr unsigned ratesEntries = optionalSubsets * (1 + DensityDiffusionForms::size);
 // Particle shifting's pair sums (ConcentrationGradient) join one optional subset only, with each

@@ -29,12 +29,13 @@ struct Side {
   T rhoInv;     // 1 / rho
   T pOverRho2;  // p / rho^2 (Tait, eq. 8)
   T mu;         // dynamic viscosity
+  T rho0;       // the rest density of its phase (eq. 8), where a term reads it
 };
 
 // A particle's side from its state: the factors computed once per particle and evaluation.
-inline Side<double> sideOf(double m, double rho, double p, double mu) {
+inline Side<double> sideOf(double m, double rho, double p, double mu, double rho0) {
   const double rhoInv = 1.0 / rho;
-  return {m, rho, rhoInv, p * rhoInv * rhoInv, mu};
+  return {m, rho, rhoInv, p * rhoInv * rhoInv, mu, rho0};
 }
 
 // The pair (i, j), r_ij = x_i - x_j, v_ij = v_i - v_j, within the kernel's support.
@@ -79,7 +80,8 @@ struct PairSums {
 
 struct Reads {
   // the particles' fields (Side) beyond their positions, velocities and h
-  bool mass = false, density = false, densityInverse = false, pressure = false, viscosity = false;
+  bool mass = false, density = false, densityInverse = false, pressure = false, viscosity = false,
+       restDensity = false;
   // the pair's shared values beyond r_ij, v_ij and the kernel
   bool etaInverse = false, rhoSumInverse = false;
 };

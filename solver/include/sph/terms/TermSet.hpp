@@ -35,6 +35,7 @@ class TermSet {
                                (Ts::reads.densityInverse || ...),
                                (Ts::reads.pressure || ...),
                                (Ts::reads.viscosity || ...),
+                               (Ts::reads.restDensity || ...),
                                (Ts::reads.etaInverse || ...),
                                (Ts::reads.rhoSumInverse || ...)};
   static constexpr Writes writes{(Ts::writes.density || ...), (Ts::writes.smoothingLength || ...),
