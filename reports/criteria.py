@@ -164,8 +164,8 @@ def counts(found: list) -> dict:
 
 def judged(found: list) -> list:
     """The criteria the verdict is about (issue 31): every verification test, and of each validation case the
-    named model's criteria; where a case has no named-model criterion (the two-fluid scenes: the solver refuses
-    density diffusion with two phases) its paper's criteria, the model that case runs. A case's named-model check
+    named model's criteria; where a case has no named-model criterion its paper's criteria, the model that case
+    runs. A case's named-model check
     that lost its runs still records a failed criterion (validate.py: "run file present"), so a missing named run
     never hands the verdict back to the paper's rows. validate.py's exit code follows the same rule
     (runfile.in_verdict), its named cases read from the run files the report reads."""

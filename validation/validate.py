@@ -9,8 +9,7 @@ check per figure of merit and run, and the resolution study as "convergence" ent
 a table, and exits 1 when a check in the verdict fails or a run file of it is missing, so that ctest fails.
 
 The verdict is the report's (reports/criteria.py, `judged`; the rule is runfile.in_verdict, shared): every check of
-the named model (<scene>_named, issue 31), and the paper's model's checks in a case the named model does not run
-(the two-fluid scenes). Where a --runs directory holds a named-model run file of CASE, a failed check of the
+the named model (<scene>_named, issue 31), and the paper's model's checks in a case the named model does not run. Where a --runs directory holds a named-model run file of CASE, a failed check of the
 paper's model is printed FINDING: the results file records it failed as before and the report lists it among its
 findings, but it does not fail the test.
 

@@ -470,8 +470,8 @@ def test_both_models_are_shown_and_the_verdict_follows_the_named_model(tmp_path,
 
 
 def test_a_case_without_named_runs_is_judged_on_the_paper_model(tmp_path, make_run):
-    """The two-fluid scenes run the paper's model alone (density diffusion needs one phase): their paper rows
-    decide the verdict even when other cases run the named model."""
+    """A case whose runs are the paper's model alone (here two-fluid runs without their named twins): its paper
+    rows decide the verdict even when other cases run the named model."""
     runs = tmp_path / "runs"
     make_run(runs / "two_fluids.h5", "two_fluids", phases=("light", "heavy"), max_volume_variation=0.004)
     make_run(runs / "dam_break.h5", "dam_break", max_volume_variation=0.004)

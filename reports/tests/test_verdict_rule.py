@@ -1,6 +1,6 @@
 """validate.py's exit code and the report's verdict follow one rule (runfile.in_verdict, issue 31): a failed check of
 the paper's model in a case the named model runs too is a finding, printed and recorded, failing nothing; a failed
-check of the named model, or of the paper's model in a case without named runs (the two-fluid scenes), fails."""
+check of the named model, or of the paper's model in a case without named runs, fails."""
 import json
 import sys
 from pathlib import Path
