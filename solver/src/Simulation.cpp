@@ -84,12 +84,12 @@ Boundaries<D> boundariesOf(const Scene& s) {
 // density), as the fluid has; the paper's scenes, without it, keep the source's density.
 template <int D>
 void ghostDensitiesFromPressure(const std::vector<Phase>& phases, InteractionSet<D>& set) {
-  Phase phase = phases[0];
+  const Phase* phase = &phases[0];
   for (std::size_t i = set.nFluid; i < set.size(); ++i) {
-    if (set.rho0[i] != phase.rho0)
+    if (set.rho0[i] != phase->rho0)
       for (const Phase& p : phases)
-        if (p.rho0 == set.rho0[i]) phase = p;
-    set.rho[i] = TaitEquationOfState::density(set.p[i], phase);
+        if (p.rho0 == set.rho0[i]) phase = &p;
+    set.rho[i] = TaitEquationOfState::density(set.p[i], *phase);
   }
 }
 

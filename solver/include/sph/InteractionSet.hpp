@@ -93,19 +93,18 @@ struct SetFluid {
 };
 
 // Copies the fluid state (pressure from the Tait EOS, viscosity and rest density from the phase)
-// into `set`, then
-// appends the halo: for each axis in turn, every entry so far within `reach` of a periodic face
-// gets an image shifted by the period, and of a wall face a ghost mirrored across it (Libersky et
-// al. 1993; Colagrossi & Landrini 2003). Working axis by axis mirrors ghosts again at corners.
-// A ghost keeps its source's density and pressure; free slip reverses the normal velocity, no
-// slip the whole velocity, both relative to the wall's own velocity.
-// `ghostGravity` zero gives the paper's ghost (the source's pressure); the body acceleration g
-// gives the ghost the hydrostatic correction p_g = p + rho g . (x_g - x), which supplies the
-// rho g that a mirrored, even pressure field lacks at the wall (without it a particle at a free
-// surface next to the wall, where p ~ 0, is held up by nothing but artificial viscosity).
-// HaloMembers::same keeps the last build's halo members (the same entries, their state
-// recomputed; `reach` unused) for a pair loop that reuses its neighbour lists: the fluid must be
-// as many particles as then, and a member's image is then in the same place of the set.
+// into `set`, then appends the halo: for each axis in turn, every entry so far within `reach` of a
+// periodic face gets an image shifted by the period, and of a wall face a ghost mirrored across it
+// (Libersky et al. 1993; Colagrossi & Landrini 2003). Working axis by axis mirrors ghosts again at
+// corners. A ghost keeps its source's density and pressure; free slip reverses the normal velocity,
+// no slip the whole velocity, both relative to the wall's own velocity. `ghostGravity` zero gives
+// the paper's ghost (the source's pressure); the body acceleration g gives the ghost the
+// hydrostatic correction p_g = p + rho g . (x_g - x), which supplies the rho g that a mirrored,
+// even pressure field lacks at the wall (without it a particle at a free surface next to the wall,
+// where p ~ 0, is held up by nothing but artificial viscosity). HaloMembers::same keeps the last
+// build's halo members (the same entries, their state recomputed; `reach` unused) for a pair loop
+// that reuses its neighbour lists: the fluid must be as many particles as then, and a member's
+// image is then in the same place of the set.
 enum class HaloMembers { rescan, same };
 template <int D>
 void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
