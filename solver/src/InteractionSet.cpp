@@ -12,7 +12,8 @@ namespace sph {
 
 template <int D>
 void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
-                         const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
+                         const Boundaries<D>& bounds, double reach,
+                         const std::type_identity_t<GhostPressure<D>>& ghost,
                          InteractionSet<D>& set, HaloMembers members) {
   const std::size_t n = fluid.size();
   const std::int64_t count = static_cast<std::int64_t>(n);
@@ -191,7 +192,9 @@ void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& pha
             }
           }
           const double xa = X[k][a];
-          p[i] = periodic ? p[k] : p[k] + rho[k] * ghostGravity[a] * (2.0 * wall - 2.0 * xa);
+          p[i] = periodic ? p[k]
+                          : std::max(p[k] + rho[k] * ghost.gravity[a] * (2.0 * wall - 2.0 * xa),
+                                     ghost.floor);  // NaN stays NaN
           rho[i] = rho[k], m[i] = m[k], h[i] = h[k], mu[i] = mu[k], rho0[i] = rho0[k];
           source[i] = source[k];
         });
@@ -201,13 +204,13 @@ void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& pha
 }
 
 template void buildInteractionSet<1>(const SetFluid<1>&, const std::vector<Phase>&,
-                                     const Boundaries<1>&, double, const Vec<1>&,
+                                     const Boundaries<1>&, double, const GhostPressure<1>&,
                                      InteractionSet<1>&, HaloMembers);
 template void buildInteractionSet<2>(const SetFluid<2>&, const std::vector<Phase>&,
-                                     const Boundaries<2>&, double, const Vec<2>&,
+                                     const Boundaries<2>&, double, const GhostPressure<2>&,
                                      InteractionSet<2>&, HaloMembers);
 template void buildInteractionSet<3>(const SetFluid<3>&, const std::vector<Phase>&,
-                                     const Boundaries<3>&, double, const Vec<3>&,
+                                     const Boundaries<3>&, double, const GhostPressure<3>&,
                                      InteractionSet<3>&, HaloMembers);
 
 }  // namespace sph

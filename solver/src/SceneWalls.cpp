@@ -69,7 +69,7 @@ void readObstacle(SceneTable& t, Scene& s) {
 }  // namespace
 
 void readWalls(SceneTable walls, std::vector<SceneTable> obstacles, SceneTable domain, Scene& s) {
-  walls.allow({"model", "layers"});
+  walls.allow({"model", "layers", "tensile"});
   const std::string model = walls.string("model", "mirror_ghosts");
   if (model == "mirror_ghosts")
     s.wallModel = WallModel::mirror_ghosts;
@@ -85,8 +85,21 @@ void readWalls(SceneTable walls, std::vector<SceneTable> obstacles, SceneTable d
                              "h/dx " +
                              SceneTable::fmt(s.hOverDx) + ") to 64, got " + std::to_string(layers));
   s.wallLayers = static_cast<int>(layers);
-  walls.rejectUnknown();
   const bool particles = s.wallModel == WallModel::wall_particles;
+  s.tensileWalls = walls.boolean("tensile", !particles);
+  if (particles && s.tensileWalls)
+    walls.fail("tensile",
+               "wall particles never pull the fluid (their pressure is not below p0, "
+               "Adami et al. 2012 eq. 27 as solver/SCENES.md applies it): remove it or "
+               "set [walls] model = \"mirror_ghosts\"");
+  for (const Phase& ph : s.phases)
+    if (!s.tensileWalls && ph.p0 != s.phases[0].p0)
+      walls.fail("tensile",
+                 "tensile = false holds the ghosts' pressure at p0, one for every phase: "
+                 "phase '" +
+                     ph.name + "' has p0 " + SceneTable::fmt(ph.p0) + ", phase '" +
+                     s.phases[0].name + "' " + SceneTable::fmt(s.phases[0].p0));
+  walls.rejectUnknown();
   if (particles && domain.has("ghost_pressure"))
     domain.fail("ghost_pressure",
                 "a mirror-ghost setting; wall particles extrapolate the fluid's pressure (Adami "

@@ -30,6 +30,19 @@ TEST(BoundaryModel, RunFileNamesTheModel) {
                                  "/ghosts' --threads 1 --quiet");
   ASSERT_EQ(b.exitCode, 0) << b.output;
   EXPECT_EQ(stringAttribute(out + "/ghosts/small_tank.h5", "/", "boundary_model"), "mirror_ghosts");
+  const auto ghostTerms = stringAttribute(out + "/ghosts/small_tank.h5", "/", "terms");
+  ASSERT_TRUE(ghostTerms);
+  EXPECT_EQ(ghostTerms->find("ghost_walls_not_tensile"), std::string::npos) << *ghostTerms;
+
+  // [walls] tensile = false is named among the terms.
+  const ProgramResult c =
+      runSph("run '" + editedScene("[[phase]]\n", "[walls]\ntensile = false\n[[phase]]\n") +
+             "' --out '" + out + "/held' --threads 1 --quiet");
+  ASSERT_EQ(c.exitCode, 0) << c.output;
+  const auto heldTerms = stringAttribute(out + "/held/small_tank.h5", "/", "terms");
+  ASSERT_TRUE(heldTerms);
+  EXPECT_NE(heldTerms->find("ghost_walls,ghost_walls_not_tensile"), std::string::npos)
+      << *heldTerms;
 }
 
 TEST(BoundaryModel, AcceptsWallParticlesAndAnObstacle) {
@@ -60,6 +73,30 @@ TEST(BoundaryModel, RefusesTooFewLayers) {
 TEST(BoundaryModel, RefusesGhostPressureWithWallParticles) {
   expectRejected("[[phase]]\n", "[walls]\nmodel = \"wall_particles\"\n[[phase]]\n",
                  "domain.ghost_pressure", "a mirror-ghost setting");
+}
+
+// [walls] tensile: wall particles never pull the fluid, so asking them to is refused; the
+// mirror ghosts' floor is one p0, so phases of other p0 are refused with it.
+TEST(BoundaryModel, RefusesTensileWallParticles) {
+  expectRejected("[[phase]]\n", "[walls]\nmodel = \"wall_particles\"\ntensile = true\n[[phase]]\n",
+                 "walls.tensile", "wall particles never pull the fluid");
+}
+
+TEST(BoundaryModel, RefusesATensionFreeWallUnderPhasesOfOtherP0) {
+  const auto withOil = [](const std::string& p0) {
+    return editedScene({{"[[phase]]\n",
+                         "[walls]\ntensile = false\n[[phase]]\nname = \"oil\"\nrho0 = 900.0\n"
+                         "c0 = 20.0\nmu = 1.0e-3\np0 = " +
+                             p0 + "\n[[phase]]\n"},
+                        {"initial_pressure = \"hydrostatic\"\n",
+                         "initial_pressure = \"hydrostatic\"\nphase = \"water\"\n"}});
+  };
+  const ProgramResult r = runSph("check '" + withOil("100.0") + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("'walls.tensile'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("phase 'water' has p0"), std::string::npos) << r.output;
+  const ProgramResult same = runSph("check '" + withOil("0.0") + "'");  // one p0: accepted
+  EXPECT_EQ(same.exitCode, 0) << same.output;
 }
 
 TEST(BoundaryModel, RefusesAnObstacleOutsideTheDomain) {

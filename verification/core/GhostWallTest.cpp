@@ -171,6 +171,39 @@ TEST(GhostWalls, HydrostaticGhostPressure) {
   for (std::size_t k = 1; k < s.size(); ++k) EXPECT_EQ(s.p[k], s.p[0]);
 }
 
+// [walls] tensile = false (GhostPressure's floor): a wall ghost of a particle in tension carries
+// p0, one under compression its own pressure, the hydrostatic correction applied first; a periodic
+// image keeps its source's pressure whatever the floor (it is fluid, not wall).
+TEST(GhostWalls, FloorHoldsWallGhostsAtP0) {
+  auto b = box<2>(FaceKind::free_slip);
+  b.face[0] = {FaceKind::periodic, FaceKind::periodic};
+  const sph::Vec<2> g(0.0, -9.81);
+  const sph::Vec<2> x(b.upper[0] - 0.01, b.lower[1] + 0.04);  // near a periodic face and the floor
+  const double p0 = water[0].p0;
+  for (const double rho : {990.0, 1003.0}) {  // tension, compression
+    const auto fluid = single<2>(x, sph::Vec<2>::Zero(), rho);
+    sph::InteractionSet<2> s;
+    sph::buildInteractionSet<2>(fluid, water, b, 0.1, sph::GhostPressure<2>(g, p0), s);
+    ASSERT_EQ(s.size(), 4u);
+    int walls = 0;
+    for (std::size_t k = 1; k < s.size(); ++k) {
+      const bool image = s.x[k][1] == x[1];  // shifted along x only: the periodic image
+      const double mirrored = s.p[0] + s.rho[0] * g.dot(s.x[k] - x);
+      if (image) {
+        EXPECT_EQ(s.p[k], s.p[0]) << rho;
+      } else {
+        ++walls;
+        if (mirrored < p0)
+          EXPECT_EQ(s.p[k], p0) << rho << " " << k;
+        else  // the corner ghost's correction is summed over two mirrors: round-off
+          EXPECT_NEAR(s.p[k], mirrored, 1e-12 * std::abs(mirrored)) << rho << " " << k;
+      }
+    }
+    EXPECT_EQ(walls, 2);                      // the floor's ghost and the ghost of the image
+    if (rho < 1000.0) EXPECT_LT(s.p[0], p0);  // the case is one of tension
+  }
+}
+
 // Kernel sum Gamma_i = sum_j m_j/rho_j W_ij (fluid and ghosts) on a cell-centred lattice filling a
 // walled box. Mirroring a cell-centred lattice across a wall that lies on a cell face continues
 // the lattice exactly, so a particle next to a wall or in a corner sees the same neighbourhood

@@ -80,6 +80,7 @@ std::string describe(const sph::Scene& c) {
   s.put("hydrostatic_ghosts", c.hydrostaticGhosts);
   s.put("leaving", std::string(c.leaving == sph::Scene::Leaving::removed ? "remove" : "fail"));
   s.put("wall_model", std::string(sph::name(c.wallModel))), s.put("wall_layers", c.wallLayers);
+  s.put("wall_tensile", c.tensileWalls);
   for (std::size_t k = 0; k < c.obstacles.size(); ++k) {
     const std::string p = "obstacle[" + std::to_string(k) + "]";
     s.put(p + ".lower", c.obstacles[k].lower), s.put(p + ".upper", c.obstacles[k].upper);

@@ -6,6 +6,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "sph/Boundaries.hpp"
@@ -92,12 +94,26 @@ struct SetFluid {
   std::size_t size() const { return count; }
 };
 
+// A wall ghost's pressure: its source's plus rho g . (x_g - x) (`gravity` zero: the paper's ghost),
+// and not below `floor` ([walls] tensile = false: a wall pushes the fluid and never pulls it;
+// -inf: the paper's mirror, which pulls fluid in tension toward the wall, solver/SCENES.md).
+template <int D>
+struct GhostPressure {
+  Vec<D> gravity;
+  double floor = -std::numeric_limits<double>::infinity();
+  // A gravity alone (any Eigen expression of one, Vec<D>::Zero() too) is the paper's rule.
+  template <class G>
+  // NOLINTNEXTLINE(google-explicit-constructor)
+  GhostPressure(const Eigen::MatrixBase<G>& g) : gravity(g) {}
+  GhostPressure(const Vec<D>& g, double least) : gravity(g), floor(least) {}
+};
+
 // Copies the fluid state (pressure from the Tait EOS, viscosity and rest density from the phase)
 // into `set`, then appends the halo: for each axis in turn, every entry so far within `reach` of a
 // periodic face gets an image shifted by the period, and of a wall face a ghost mirrored across it
 // (Libersky et al. 1993; Colagrossi & Landrini 2003). Working axis by axis mirrors ghosts again at
 // corners. A ghost keeps its source's density and pressure; free slip reverses the normal velocity,
-// no slip the whole velocity, both relative to the wall's own velocity. `ghostGravity` zero gives
+// no slip the whole velocity, both relative to the wall's own velocity. `ghost.gravity` zero gives
 // the paper's ghost (the source's pressure); the body acceleration g gives the ghost the
 // hydrostatic correction p_g = p + rho g . (x_g - x), which supplies the rho g that a mirrored,
 // even pressure field lacks at the wall (without it a particle at a free surface next to the wall,
@@ -106,15 +122,18 @@ struct SetFluid {
 // that reuses its neighbour lists: the fluid must be as many particles as then, and a member's
 // image is then in the same place of the set.
 enum class HaloMembers { rescan, same };
+// (`ghost` takes no part in deducing D, so that a gravity alone converts to its rule.)
 template <int D>
 void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
-                         const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
+                         const Boundaries<D>& bounds, double reach,
+                         const std::type_identity_t<GhostPressure<D>>& ghost,
                          InteractionSet<D>& set, HaloMembers members = HaloMembers::rescan);
 template <int D>
 void buildInteractionSet(const Particles<D>& fluid, const std::vector<Phase>& phases,
-                         const Boundaries<D>& bounds, double reach, const Vec<D>& ghostGravity,
+                         const Boundaries<D>& bounds, double reach,
+                         const std::type_identity_t<GhostPressure<D>>& ghost,
                          InteractionSet<D>& set, HaloMembers members = HaloMembers::rescan) {
-  buildInteractionSet(SetFluid<D>(fluid), phases, bounds, reach, ghostGravity, set, members);
+  buildInteractionSet(SetFluid<D>(fluid), phases, bounds, reach, ghost, set, members);
 }
 
 }  // namespace sph

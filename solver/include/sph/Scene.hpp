@@ -92,6 +92,9 @@ struct Scene {
   WallModel wallModel = WallModel::mirror_ghosts;
   int wallLayers =
       0;  // layers of wall particles (set by the reader: [walls] layers or its default)
+  // [walls] tensile: mirror ghosts carry pressure below p0 (the paper: the wall pulls fluid in
+  // tension toward it), or not (a wall pushes and never pulls, as wall particles always do).
+  bool tensileWalls = true;
   std::vector<Obstacle> obstacles;
   std::vector<Phase> phases;
   std::vector<FluidBlock> fluids;

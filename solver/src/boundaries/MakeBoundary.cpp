@@ -1,3 +1,4 @@
+#include <limits>
 #include <memory>
 
 #include "sph/Scene.hpp"
@@ -11,10 +12,13 @@ template <int D>
 std::unique_ptr<Boundary<D>> makeBoundary(const Scene& s, const Boundaries<D>& bounds) {
   Vec<D> g;
   for (int a = 0; a < D; ++a) g[a] = s.bodyAcceleration[a];
-  const Vec<D> ghostGravity = s.hydrostaticGhosts ? g : Vec<D>::Zero();
+  // [walls] tensile = false: the ghosts' pressure not below p0, which the reader keeps one for
+  // every phase.
+  const GhostPressure<D> ghost(
+      s.hydrostaticGhosts ? g : Vec<D>::Zero(),
+      s.tensileWalls ? -std::numeric_limits<double>::infinity() : s.phases[0].p0);
   const bool particles = s.wallModel == WallModel::wall_particles;
-  if (!particles && s.obstacles.empty())
-    return std::make_unique<MirrorGhosts<D>>(bounds, ghostGravity);
+  if (!particles && s.obstacles.empty()) return std::make_unique<MirrorGhosts<D>>(bounds, ghost);
   WallLattice<D> lattice;
   std::vector<std::string> terms;
   Boundaries<D> halo = bounds;  // the faces still imaged or mirrored
@@ -26,6 +30,7 @@ std::unique_ptr<Boundary<D>> makeBoundary(const Scene& s, const Boundaries<D>& b
     if (bounds.anyWall()) terms.push_back("wall_particles_adami2012");
   } else if (bounds.anyWall()) {
     terms.push_back("ghost_walls");
+    if (!s.tensileWalls) terms.push_back("ghost_walls_not_tensile");
   }
   std::vector<SolidBox<D>> solids;
   for (const Obstacle& o : s.obstacles) {
@@ -44,9 +49,9 @@ std::unique_ptr<Boundary<D>> makeBoundary(const Scene& s, const Boundaries<D>& b
   auto walls = std::make_shared<const FixedWalls<D>>(std::move(lattice.x), std::move(lattice.rule),
                                                      std::move(lattice.volume), s.h0(), s.kernel,
                                                      s.phases[0], g);
-  return std::make_unique<WallParticles<D>>(halo, particles ? Vec<D>::Zero() : ghostGravity,
-                                            std::move(walls), std::move(solids),
-                                            std::string(name(s.wallModel)), std::move(terms));
+  return std::make_unique<WallParticles<D>>(
+      halo, particles ? GhostPressure<D>(Vec<D>::Zero()) : ghost, std::move(walls),
+      std::move(solids), std::string(name(s.wallModel)), std::move(terms));
 }
 
 template std::unique_ptr<Boundary<1>> makeBoundary<1>(const Scene&, const Boundaries<1>&);

@@ -83,12 +83,12 @@ void layObstacle(const SolidBox<D>& box, FaceKind wall, double dx, int layers,
 }
 
 template <int D>
-WallParticles<D>::WallParticles(const Boundaries<D>& halo, const Vec<D>& ghostGravity,
+WallParticles<D>::WallParticles(const Boundaries<D>& halo, const GhostPressure<D>& ghost,
                                 std::shared_ptr<const FixedWalls<D>> walls,
                                 std::vector<SolidBox<D>> solids, std::string name,
                                 std::vector<std::string> terms)
     : halo_(halo),
-      ghostGravity_(ghostGravity),
+      ghost_(ghost),
       walls_(std::move(walls)),
       solids_(std::move(solids)),
       name_(std::move(name)),
@@ -97,7 +97,7 @@ WallParticles<D>::WallParticles(const Boundaries<D>& halo, const Vec<D>& ghostGr
 template <int D>
 void WallParticles<D>::build(const SetFluid<D>& fluid, const std::vector<Phase>& phases,
                              double reach, HaloMembers members, InteractionSet<D>& set) const {
-  buildInteractionSet(fluid, phases, halo_, reach, ghostGravity_, set, members);
+  buildInteractionSet(fluid, phases, halo_, reach, ghost_, set, members);
   walls_->append(set, reach, members);
 }
 

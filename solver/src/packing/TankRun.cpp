@@ -115,7 +115,7 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
   Boundaries<2> open;
   open.lower = Vec2(run.lower[0], run.lower[1]), open.upper = Vec2(run.upper[0], run.upper[1]);
   sim_->setBoundary(std::make_unique<WallParticles<2>>(
-      open, Vec2::Zero(), walls_, std::vector<SolidBox<2>>{}, "fixed_walls",
+      open, GhostPressure<2>(Vec2::Zero()), walls_, std::vector<SolidBox<2>>{}, "fixed_walls",
       std::vector<std::string>{"fixed_walls_adami2012"}));
   // Section 3.1.1: dv/dt += -zeta v while t < t_damp, zeta = (zeta H / c0) c0 / H.
   if (options.dampingZeta > 0 && options.dampingTime > 0) {

@@ -47,9 +47,9 @@ template <int D>
 class WallParticles final : public Boundary<D> {
  public:
   // `halo`: the faces buildInteractionSet images (periodic) or mirrors (walls not made of
-  // particles; `ghostGravity` as in MirrorGhosts); `walls`: the particles; `solids`: the boxes
+  // particles; `ghost` their pressure rule); `walls`: the particles; `solids`: the boxes
   // they fill, for the checks; `name` the model's, `terms` what it adds to the run file's terms.
-  WallParticles(const Boundaries<D>& halo, const Vec<D>& ghostGravity,
+  WallParticles(const Boundaries<D>& halo, const GhostPressure<D>& ghost,
                 std::shared_ptr<const FixedWalls<D>> walls, std::vector<SolidBox<D>> solids,
                 std::string name, std::vector<std::string> terms);
   std::string_view name() const override { return name_; }
@@ -70,7 +70,7 @@ class WallParticles final : public Boundary<D> {
   double depthIn(const SolidBox<D>& s, const Vec<D>& r, int& axis, int& side) const;
 
   Boundaries<D> halo_;
-  Vec<D> ghostGravity_;
+  GhostPressure<D> ghost_;
   std::shared_ptr<const FixedWalls<D>> walls_;
   std::vector<SolidBox<D>> solids_;
   std::string name_;
