@@ -29,6 +29,7 @@ VARIANTS = [
      "twice the paper's resolution; to the paper's frame at 0.033 s for the nightly budget"),
     ("two_fluids", "dx0.003", 0.003, None, "quick tier: H/dx = 20"),
     ("two_fluids", "dx0.001", 0.001, None, "the paper's printed dx = 0.001 m (7200 particles, not 3200)"),
+    ("two_fluids_lid", "dx0.001", 0.001, None, "the paper's printed dx = 0.001 m"),
     ("two_fluids_rho1050", "dx0.006", 0.006, None, "quick tier: H/dx = 10"),
     ("two_fluids_rho1050", "dx0.0015", 0.0015, None, "H/dx = 40"),
     ("spheric_dam_break", "dx0.08", 0.08, 0.6, "quick smoke test: the front reaches the box (P1 wets at 0.47 s), seconds of 2 cores"),
@@ -66,6 +67,7 @@ NAMED = [  # (base, resolution tag or None for the base scene itself, end time o
     ("drop_into_pool", "dx0.002", None), ("drop_into_pool", None, None), ("drop_into_pool", "dx0.0005", None),
     ("spheric_dam_break", "dx0.08", None), ("spheric_dam_break", None, 2.0),
     ("two_fluids", "dx0.003", None), ("two_fluids", None, None), ("two_fluids", "dx0.001", None),
+    ("two_fluids_lid", None, None), ("two_fluids_lid", "dx0.001", None),
     ("two_fluids_rho1050", "dx0.006", None), ("two_fluids_rho1050", None, None),
     ("two_fluids_rho1050", "dx0.0015", None),
 ]
