@@ -160,6 +160,11 @@ void checkDuration(const Scene& s, const RunLimits& limits, RunEstimate& e) {
   e.entries = f.entries, e.evaluationSeconds = f.evaluationSeconds;
   e.evaluationsPerStep = evaluationsPerStep(s.integrator);
   e.runSeconds = e.steps * e.evaluationsPerStep * e.evaluationSeconds;
+  // A packed block's packing (Colagrossi et al. 2012) takes up to max_iterations passes of its
+  // pair sums over the block, each at most a force evaluation of the start: counted at that
+  // bound, so that a packing that cannot end soon (max_iterations = 1e9) shows in the work.
+  for (const FluidBlock& b : s.fluids)
+    if (b.packed) e.runSeconds += static_cast<double>(b.packingMaxIterations) * e.evaluationSeconds;
   e.snapshots = s.snapshotInterval > 0 ? std::floor(s.endTime / s.snapshotInterval) + 2 : 2;
   const double columns = 9.0 + s.phases.size() + s.probes.size();  // Run.cpp's Series
   const double rows = e.steps / s.seriesEvery + e.snapshots;
