@@ -1,11 +1,13 @@
 #!/usr/bin/python3
 """Issue 32's recover check (ctest label `recover`, as MOOSE's --recover mode): a validation scene
-stopped at half its end time (`sph run --stop-at`, on 2 threads) and continued from the checkpoint
-that the stop wrote (`sph run --restart`, on 1 thread) must give the run file of the run that did
-not stop, bit for bit (perf/compare_runs.py: every dataset, the physics attributes, the /metrics
-counters).
+stopped at half its end time (`sph run --stop-at`, on THREADS threads, 2 by default) and continued
+from the checkpoint that the stop wrote (`sph run --restart`, on 1 thread) must give the run file of
+the run that did not stop, bit for bit (perf/compare_runs.py: every dataset, the physics attributes,
+the /metrics counters). The matrix passes its run's threads (validation/matrix/matrix.toml): a
+restart on another thread count is the quick tier's Restart tests' check, so that a 1-thread run's
+check holds one core.
 
-    recover.py SPH SCENE.toml REFERENCE.h5 OUT_DIR
+    recover.py SPH SCENE.toml REFERENCE.h5 OUT_DIR [THREADS]
 """
 import os
 import shutil
@@ -24,18 +26,18 @@ def run(command):
         sys.exit(f"exit {done.returncode}: {' '.join(command)}")
 
 
-def main(sph, scene_path, reference, out):
+def main(sph, scene_path, reference, out, threads="2"):
     with open(scene_path, "rb") as f:
         scene = tomllib.load(f)
     half = 0.5 * scene["numerics"]["end_time"]
     shutil.rmtree(out, ignore_errors=True)
-    run([sph, "run", scene_path, "--out", out, "--threads", "2", "--stop-at", repr(half), "--quiet"])
+    run([sph, "run", scene_path, "--out", out, "--threads", threads, "--stop-at", repr(half), "--quiet"])
     checkpoint = os.path.join(out, scene["name"] + ".checkpoint.h5")
     run([sph, "run", "--restart", checkpoint, "--threads", "1", "--quiet"])
     compare_runs.main(reference, os.path.join(out, scene["name"] + ".h5"))
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 5:
+    if len(sys.argv) not in (5, 6) or (len(sys.argv) == 6 and not sys.argv[5].isdigit()):
         sys.exit(__doc__)
     main(*sys.argv[1:])

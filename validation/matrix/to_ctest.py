@@ -3,7 +3,7 @@
 
     to_ctest.py MATRIX OUT.cmake
 
-One `sph_matrix_run(NAME TIER TIMEOUT THREADS)` a run, `sph_validation_recover(NAME TIER TIMEOUT)` where
+One `sph_matrix_run(NAME TIER TIMEOUT THREADS)` a run, `sph_validation_recover(NAME TIER TIMEOUT THREADS)` where
 the run has recover_timeout_s, `sph_validation_check(NAME CASE TIER RUNS...)` a check, and
 `sph_validation_after(NAME RUNS...)` for a check of the paper's model in a case the named model runs too: it starts
 after the named model's runs of its case (the functions are validation/CMakeLists.txt's). The file is rewritten only when its text changes, so that an unchanged matrix does
@@ -35,7 +35,7 @@ def cmake_text(m: matrix.Matrix) -> str:
     for r in m.runs:
         lines.append(f"sph_matrix_run({r.name} {r.tier} {r.timeout_s} {r.threads})")
         if r.recover_timeout_s:
-            lines.append(f"sph_validation_recover({r.name} {r.tier} {r.recover_timeout_s})")
+            lines.append(f"sph_validation_recover({r.name} {r.tier} {r.recover_timeout_s} {r.threads})")
     named = named_runs(m)
     for c in m.checks:
         lines.append(f"sph_validation_check({c.name} {c.case} {c.tier} {' '.join(c.runs)})")

@@ -63,7 +63,8 @@ def test_to_ctest_writes_one_call_a_run_recover_and_check(tmp_path):
     m = matrix.load()
     text = to_ctest.cmake_text(m)
     assert text.count("sph_matrix_run(") == len(m.runs) > 0
-    assert "sph_matrix_run(dam_break quick" not in text and "sph_matrix_run(dam_break nightly 1500 2)" in text
+    assert "sph_matrix_run(dam_break quick" not in text and "sph_matrix_run(dam_break nightly 1500 1)" in text
+    assert "sph_matrix_run(spheric_dam_break nightly 7200 2)" in text  # 3-D: two threads
     assert text.count("sph_validation_recover(") == sum(1 for r in m.runs if r.recover_timeout_s)
     assert "sph_validation_check(two_fluids_quick two_fluids quick two_fluids_dx0.003 two_fluids_rho1050_dx0.006)" \
         in text
@@ -121,7 +122,8 @@ def test_run_writes_its_row_with_sph_exit_code_and_slurm_threads(tmp_path):
 def test_run_fails_when_sph_exits_0_without_its_outputs(tmp_path):
     done = run_py(tmp_path, fake_sph(tmp_path, "exit 0"))
     assert done.returncode == 1 and "left no martin_moyce_a10.h5" in done.stderr
-    assert json.loads((tmp_path / "rows" / "martin_moyce_a10.json").read_text())["threads"] == 2  # the matrix's
+    threads = matrix.load(matrix.DEFAULT_MATRIX).run("martin_moyce_a10").threads
+    assert json.loads((tmp_path / "rows" / "martin_moyce_a10.json").read_text())["threads"] == threads
 
 
 def submit(*args):
@@ -133,10 +135,14 @@ def test_dry_run_writes_one_array_over_the_selection_and_a_gather_job(tmp_path):
                   "--module", "hdf5/1.14", "--sph", "/opt/sph")
     assert done.returncode == 0, done.stderr
     sub = tmp_path / "slurm" / "submit-1"
-    quick = [r.name for r in matrix.load().select(["quick"])]
-    assert (sub / "names-t2.txt").read_text().split() == quick
-    script = (sub / "array-t2.sbatch").read_text()
-    for line in (f"#SBATCH --array=0-{len(quick) - 1}", "#SBATCH --cpus-per-task=2", "#SBATCH --partition=batch",
+    selected = matrix.load().select(["quick"])
+    quick = [r.name for r in selected]
+    one = [r.name for r in selected if r.threads == 1]  # one array a thread count
+    assert 0 < len(one) < len(quick)
+    assert (sub / "names-t1.txt").read_text().split() == one
+    assert (sub / "names-t2.txt").read_text().split() == [r.name for r in selected if r.threads == 2]
+    script = (sub / "array-t1.sbatch").read_text()
+    for line in (f"#SBATCH --array=0-{len(one) - 1}", "#SBATCH --cpus-per-task=1", "#SBATCH --partition=batch",
                  "#SBATCH --account=proj7", "module load hdf5/1.14", "--index $SLURM_ARRAY_TASK_ID", "--sph /opt/sph",
                  "#SBATCH --time=6"):  # 300 s -> 5 min, and one to start
         assert line in script, line
@@ -155,9 +161,9 @@ def test_resubmit_takes_only_the_failed_and_the_missing_runs(tmp_path):
         (tmp_path / "rows" / f"{r.name}.json").write_text(json.dumps({"run": r.name, "exit_code": code}))
     done = submit("--out", tmp_path, "--resubmit", "--dry-run")
     assert done.returncode == 0, done.stderr
-    again = [r.name for r in quick[4:]]  # the failed one and those without a row
-    assert (tmp_path / "slurm" / "submit-2" / "names-t2.txt").read_text().split() == again
-    assert f"#SBATCH --array=0-{len(again) - 1}" in (tmp_path / "slurm" / "submit-2" / "array-t2.sbatch").read_text()
+    again = [r.name for r in quick[4:] if r.threads == 1]  # the failed one and those without a row, on 1 thread
+    assert (tmp_path / "slurm" / "submit-2" / "names-t1.txt").read_text().split() == again
+    assert f"#SBATCH --array=0-{len(again) - 1}" in (tmp_path / "slurm" / "submit-2" / "array-t1.sbatch").read_text()
     # the gather job still gathers the whole selection
     assert all(f"--run {r.name}" in (tmp_path / "slurm" / "submit-2" / "gather.sbatch").read_text() for r in quick)
 
