@@ -114,7 +114,7 @@ def main(argv=None) -> int:
             print(f"cluster up: {cluster.env['SLURM_CONF']}, {cluster.cpus} cpus", flush=True)
             # 3. the array with one task failing
             sh([*submit, "--matrix", test_matrix, *names, "--sph", args.sph], cluster.env)
-            script = out / "slurm" / "submit-1" / "array-t2.sbatch"
+            script = out / "slurm" / "submit-1" / f"array-t{m.run(BROKEN).threads}.sbatch"  # one array a thread count
             print(f"--- {script}\n{script.read_text()}---", flush=True)
             states = rows.states(selection, out / "rows", out / "runs")
             expect(states == {r.name: ("failed" if r.name == BROKEN else "done") for r in selection},
@@ -130,7 +130,7 @@ def main(argv=None) -> int:
             # 4. repaired, resubmitted: only that run reruns
             broken_scene.write_text(good_scene.read_text())
             sh([*submit, "--resubmit"], cluster.env)
-            again = (out / "slurm" / "submit-2" / "names-t2.txt").read_text().split()
+            again = (out / "slurm" / "submit-2" / f"names-t{m.run(BROKEN).threads}.txt").read_text().split()
             expect(again == [BROKEN], f"the resubmitted array holds {again} (only {BROKEN})")
             after = slurm_ids(out / "rows")
             expect(all(after[n] == before[n] for n in times), "the other rows are untouched (same job ids, starts)")
