@@ -1,15 +1,16 @@
 // Issue 31 (nightly): the tank at rest of TankAtRest.hpp to t sqrt(g/H) = 100 with the named
 // model (the paper's terms with Fourtakas et al.'s density diffusion, delta 0.1), one ctest entry
 // a case. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars (measured
-// with validation/stability/tank_at_rest_study.py: max|u| 3.8e-3, 4.0e-3, 2.8e-3, 5.2e-3 sqrt(gH)
-// and bottom pressure 0.73, 0.73, 0.60, 0.60 % at H/dx 20 1:1, 20 4:1, 40 1:1, 40 4:1; the last
-// took 284 s of one core). The paper's quadratic kernel and the cubic spline (h/dx 1.33) do not
-// everywhere:
+// with validation/stability/tank_at_rest_study.py: max|u| 3.8e-3, 4.0e-3, 2.8e-3, 5.2e-3, 5.2e-3
+// sqrt(gH) and bottom pressure 0.73, 0.73, 0.60, 0.60, 0.64 % at H/dx 20 1:1, 20 4:1, 40 1:1,
+// 40 4:1, 80 1:1; the last two took 284 and 553 s of one core). The paper's quadratic kernel and
+// the cubic spline (h/dx 1.33) do not everywhere:
 //   H/dx 20, 1:1: quadratic max|u| 2.1e-3 sqrt(gH), bottom 1.6 %; cubic 6.0e-3, 0.67 %
 //   H/dx 20, 4:1: quadratic 1.8e-2, 1.5 %;                       cubic 1.9e-2, 0.59 %
 //   H/dx 40, 1:1: quadratic 2.5e-3, 1.6 %;                       cubic 5.5e-3, 0.65 %
+//   H/dx 40, 4:1: quadratic 8.4e-3, 1.7 % (measured, not run here)
 // so where they fail a bar their cases keep regression bounds of 2.5 times the measured values.
-// Not here: H/dx 80 (2 to 8 times the 4:1 tank at H/dx 40).
+// Not here: 4:1 at H/dx 80 (8 times the 4:1 tank at H/dx 40: about 40 min of one core).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -60,6 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
                       NightlyCase{{4.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{{1.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+                      NightlyCase{{1.0, 80, wendland, 100.0}, speedBar, bottomPressureBar, bar},
                       NightlyCase{{1.0, 20, quadratic, 100.0}, 5.3e-3, 0.041, regression},
                       NightlyCase{{4.0, 20, quadratic, 100.0}, 0.046, 0.038, regression},
                       NightlyCase{{1.0, 40, quadratic, 100.0}, 6.2e-3, 0.040, regression},
