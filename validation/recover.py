@@ -1,13 +1,12 @@
 #!/usr/bin/python3
 """Issue 32's recover check (ctest label `recover`, as MOOSE's --recover mode): a validation scene
-stopped at half its end time (`sph run --stop-at`, on THREADS threads, 2 by default) and continued
-from the checkpoint that the stop wrote (`sph run --restart`, on 1 thread) must give the run file of
-the run that did not stop, bit for bit (perf/compare_runs.py: every dataset, the physics attributes,
-the /metrics counters). The matrix passes its run's threads (validation/matrix/matrix.toml): a
-restart on another thread count is the quick tier's Restart tests' check, so that a 1-thread run's
-check holds one core.
+stopped at half its end time (`sph run --stop-at`, on THREADS threads) and continued from the
+checkpoint that the stop wrote (`sph run --restart`, on 1 thread) must give the run file of the run
+that did not stop, bit for bit (perf/compare_runs.py: every dataset, the physics attributes, the
+/metrics counters). THREADS is the run's own (validation/matrix/matrix.toml), so that a 1-thread
+run's check holds one core; a restart on another thread count is the quick tier's Restart tests'.
 
-    recover.py SPH SCENE.toml REFERENCE.h5 OUT_DIR [THREADS]
+    recover.py SPH SCENE.toml REFERENCE.h5 OUT_DIR THREADS
 """
 import os
 import shutil
@@ -26,7 +25,7 @@ def run(command):
         sys.exit(f"exit {done.returncode}: {' '.join(command)}")
 
 
-def main(sph, scene_path, reference, out, threads="2"):
+def main(sph, scene_path, reference, out, threads):
     with open(scene_path, "rb") as f:
         scene = tomllib.load(f)
     half = 0.5 * scene["numerics"]["end_time"]
@@ -38,6 +37,6 @@ def main(sph, scene_path, reference, out, threads="2"):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (5, 6) or (len(sys.argv) == 6 and not sys.argv[5].isdigit()):
+    if len(sys.argv) != 6 or not sys.argv[5].isdigit():
         sys.exit(__doc__)
     main(*sys.argv[1:])
