@@ -64,7 +64,7 @@ def test_to_ctest_writes_one_call_a_run_recover_and_check(tmp_path):
     text = to_ctest.cmake_text(m)
     assert text.count("sph_matrix_run(") == len(m.runs) > 0
     assert "sph_matrix_run(dam_break quick" not in text and "sph_matrix_run(dam_break nightly 1500 1)" in text
-    assert "sph_matrix_run(spheric_dam_break nightly 7200 2)" in text  # 3-D: two threads
+    assert "sph_matrix_run(spheric_dam_break nightly 7200 1)" in text  # 3-D too: one thread
     assert text.count("sph_validation_recover(") == sum(1 for r in m.runs if r.recover_timeout_s)
     assert "sph_validation_check(two_fluids_quick two_fluids quick two_fluids_dx0.003 two_fluids_rho1050_dx0.006)" \
         in text
