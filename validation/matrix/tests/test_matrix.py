@@ -130,12 +130,16 @@ def submit(*args):
     return subprocess.run([sys.executable, str(SUBMIT), *map(str, args)], capture_output=True, text=True)
 
 
-def test_dry_run_writes_one_array_over_the_selection_and_a_gather_job(tmp_path):
-    done = submit("--out", tmp_path, "--tier", "quick", "--dry-run", "--partition", "batch", "--account", "proj7",
-                  "--module", "hdf5/1.14", "--sph", "/opt/sph")
+def test_dry_run_writes_one_array_a_thread_count_and_a_gather_job(tmp_path):
+    # The matrix's own runs all take one thread; a matrix of three quick runs, one of them on two.
+    runs = [("dam_break_dx0.025", 1), ("martin_moyce_a10", 1), ("spheric_dam_break_dx0.08", 2)]
+    m = write(tmp_path, f'base = "{ROOT / "validation"}"\n' + "".join(
+        f'[[run]]\nscene = "scenes/{n}.toml"\ntier = "quick"\ntimeout_s = 300\nthreads = {t}\n' for n, t in runs))
+    done = submit("--out", tmp_path, "--matrix", m, "--tier", "quick", "--dry-run", "--partition", "batch",
+                  "--account", "proj7", "--module", "hdf5/1.14", "--sph", "/opt/sph")
     assert done.returncode == 0, done.stderr
     sub = tmp_path / "slurm" / "submit-1"
-    selected = matrix.load().select(["quick"])
+    selected = matrix.load(m).select(["quick"])
     quick = [r.name for r in selected]
     one = [r.name for r in selected if r.threads == 1]  # one array a thread count
     assert 0 < len(one) < len(quick)
@@ -146,6 +150,7 @@ def test_dry_run_writes_one_array_over_the_selection_and_a_gather_job(tmp_path):
                  "#SBATCH --account=proj7", "module load hdf5/1.14", "--index $SLURM_ARRAY_TASK_ID", "--sph /opt/sph",
                  "#SBATCH --time=6"):  # 300 s -> 5 min, and one to start
         assert line in script, line
+    assert "#SBATCH --cpus-per-task=2" in (sub / "array-t2.sbatch").read_text()
     gather = (sub / "gather.sbatch").read_text()
     assert all(f"--run {n}" in gather for n in quick) and "#SBATCH --partition=batch" in gather
 
