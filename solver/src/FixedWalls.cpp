@@ -14,22 +14,24 @@ namespace sph {
 
 template <int D>
 FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, double V0, double h, KernelKind kernel,
-                          const Phase& phase, const Vec<D>& g)
-    : x_(std::move(position)), V0_(V0), h_(h), kernel_(kernel), phase_(phase), g_(g) {
+                          std::vector<Phase> phases, const Vec<D>& g)
+    : x_(std::move(position)), V0_(V0), h_(h), kernel_(kernel), phases_(std::move(phases)), g_(g) {
+  if (phases_.empty()) throw std::logic_error("FixedWalls: no phase");
   frameTheWalls();
 }
 
 template <int D>
 FixedWalls<D>::FixedWalls(std::vector<Vec<D>> position, std::vector<WallVelocityRule<D>> velocity,
                           std::vector<double> volume, double h, KernelKind kernel,
-                          const Phase& phase, const Vec<D>& g)
+                          std::vector<Phase> phases, const Vec<D>& g)
     : x_(std::move(position)),
       velocity_(std::move(velocity)),
       volume_(std::move(volume)),
       h_(h),
       kernel_(kernel),
-      phase_(phase),
+      phases_(std::move(phases)),
       g_(g) {
+  if (phases_.empty()) throw std::logic_error("FixedWalls: no phase");
   if (velocity_.size() != x_.size() || volume_.size() != x_.size())
     throw std::logic_error("FixedWalls: one velocity rule and one volume per wall particle");
   frameTheWalls();
@@ -227,43 +229,56 @@ void FixedWalls<D>::sumListed(InteractionSet<D>& set, std::size_t base) const {
   const std::int32_t* neighbours = set.wallNeighbours.data();
   const std::size_t* at = set.wallNeighboursAt.data();
   const bool moving = !velocity_.empty(), ownVolumes = !volume_.empty();
+  const int nPhases = static_cast<int>(phases_.size());
+  const int* phaseOf = set.phase.data();
   // The kernel chosen once, outside the loops (kernelValue would switch on it at every pair).
   withKernel(kernel_, [&](auto kernel) {
     using Kernel = decltype(kernel);
-#pragma omp parallel for schedule(static) if (nWall >= parallelFrom())
-    for (std::int64_t q = 0; q < nWall; ++q) {
-      const std::int64_t w = chosen[q];
-      const Vec<D>& xw = x_[w];
-      double sumW = 0, sumPW = 0;
-      Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
-      for (std::size_t k = at[q]; k < at[q + 1]; ++k) {
-        const int f = neighbours[k];
-        const Vec<D> r_wf = xw - set.x[f];
-        const double r2_wf = r_wf.squaredNorm();
-        if (r2_wf >= support2) continue;  // W = 0 from r = 2 h on: no root needed
-        const double W_wf = Kernel::template W<D>(std::sqrt(r2_wf), h_);
-        sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
-        if (moving) sumVW += W_wf * set.v[f];
-      }
-      // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
-      // Not below p0: see the header.
-      const double p =
-          sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, phase_.p0) : phase_.p0;
-      // p0 gives rho0 exactly ((p0 - p0) / K + 1 = 1): no root to take.
-      const double rho = p == phase_.p0 ? phase_.rho0 : TaitEquationOfState::density(p, phase_);
-      Vec<D> v = Vec<D>::Zero();
-      if (moving) {
-        const WallVelocityRule<D>& rule = velocity_[w];
-        if (!rule.atRest) {
-          const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
-          for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
-            v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
+#pragma omp parallel if (nWall >= parallelFrom())
+    {
+      std::vector<double> weightOf(static_cast<std::size_t>(nPhases));  // sum W_wf by phase
+#pragma omp for schedule(static)
+      for (std::int64_t q = 0; q < nWall; ++q) {
+        const std::int64_t w = chosen[q];
+        const Vec<D>& xw = x_[w];
+        double sumW = 0, sumPW = 0;
+        Vec<D> sumRhoRW = Vec<D>::Zero(), sumVW = Vec<D>::Zero();
+        if (nPhases > 1) std::fill(weightOf.begin(), weightOf.end(), 0.0);
+        for (std::size_t k = at[q]; k < at[q + 1]; ++k) {
+          const int f = neighbours[k];
+          const Vec<D> r_wf = xw - set.x[f];
+          const double r2_wf = r_wf.squaredNorm();
+          if (r2_wf >= support2) continue;  // W = 0 from r = 2 h on: no root needed
+          const double W_wf = Kernel::template W<D>(std::sqrt(r2_wf), h_);
+          sumW += W_wf, sumPW += set.p[f] * W_wf, sumRhoRW += set.rho[f] * W_wf * r_wf;
+          if (moving) sumVW += W_wf * set.v[f];
+          if (nPhases > 1) weightOf[phaseOf[f]] += W_wf;
         }
+        // The phase that weighs most (the header); the first on a tie or with no fluid.
+        int phase = 0;
+        for (int k = 1; k < nPhases; ++k)
+          if (weightOf[k] > weightOf[phase]) phase = k;
+        const Phase& ph = phases_[phase];
+        // Adami et al. (2012) eq. (27) with the wall at rest (a_w = 0); eq. (28) for the density.
+        // Not below p0: see the header.
+        const double p = sumW > 0 ? std::max((sumPW + g_.dot(sumRhoRW)) / sumW, ph.p0) : ph.p0;
+        // p0 gives rho0 exactly ((p0 - p0) / K + 1 = 1): no root to take.
+        const double rho = p == ph.p0 ? ph.rho0 : TaitEquationOfState::density(p, ph);
+        Vec<D> v = Vec<D>::Zero();
+        if (moving) {
+          const WallVelocityRule<D>& rule = velocity_[w];
+          if (!rule.atRest) {
+            const Vec<D> smoothed = sumW > 0 ? Vec<D>(sumVW / sumW) : Vec<D>::Zero();  // eq. (22)
+            for (int a = 0; a < D; ++a)  // eq. (23) along the reversed axes
+              v[a] = rule.reversed[a] != 0 ? 2.0 * rule.wallVelocity[a] - smoothed[a] : smoothed[a];
+          }
+        }
+        const std::size_t e = base + static_cast<std::size_t>(q);
+        set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
+        set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
+        set.h[e] = h_, set.mu[e] = ph.mu, set.rho0[e] = ph.rho0, set.phase[e] = phase;
+        set.source[e] = -1;
       }
-      const std::size_t e = base + static_cast<std::size_t>(q);
-      set.x[e] = xw, set.v[e] = v, set.rho[e] = rho, set.p[e] = p,
-      set.m[e] = rho * (ownVolumes ? volume_[w] : V0_);
-      set.h[e] = h_, set.mu[e] = phase_.mu, set.rho0[e] = phase_.rho0, set.source[e] = -1;
     }
   });
 }

@@ -55,11 +55,11 @@ void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& pha
       Vec<D>* V = set.v.data();
       double *Rho = set.rho.data(), *M = set.m.data(), *H = set.h.data(), *P = set.p.data(),
              *Mu = set.mu.data(), *Rho0 = set.rho0.data();
-      int* source = set.source.data();
+      int *PhaseOf = set.phase.data(), *source = set.source.data();
       const auto copy = [=](const Fields& f, std::int64_t s, std::int64_t i) {
         X[i] = f.r[s], V[i] = f.v[s], Rho[i] = f.rho[s], M[i] = f.m[s], H[i] = f.h[s];
         P[i] = TaitEquationOfState::pressure(f.rho[s], ph[f.phase[s]]);
-        Mu[i] = ph[f.phase[s]].mu, Rho0[i] = ph[f.phase[s]].rho0;
+        Mu[i] = ph[f.phase[s]].mu, Rho0[i] = ph[f.phase[s]].rho0, PhaseOf[i] = f.phase[s];
         source[i] = static_cast<int>(i);
       };
       if (!fluid.halo) {
@@ -159,7 +159,7 @@ void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& pha
       Vec<D>* V = set.v.data();
       double *rho = set.rho.data(), *p = set.p.data(), *m = set.m.data(), *h = set.h.data(),
              *mu = set.mu.data(), *rho0 = set.rho0.data();
-      int* source = set.source.data();
+      int *phase = set.phase.data(), *source = set.source.data();
       // The images of each run (its last ones walked down: see walk()); a run's images are a run
       // of this thread's for the next axis.
       const int sourceRuns = nRuns;
@@ -196,7 +196,7 @@ void buildInteractionSet(const SetFluid<D>& fluid, const std::vector<Phase>& pha
                           : std::max(p[k] + rho[k] * ghost.gravity[a] * (2.0 * wall - 2.0 * xa),
                                      ghost.floor);  // NaN stays NaN
           rho[i] = rho[k], m[i] = m[k], h[i] = h[k], mu[i] = mu[k], rho0[i] = rho0[k];
-          source[i] = source[k];
+          phase[i] = phase[k], source[i] = source[k];
         });
       }
     }

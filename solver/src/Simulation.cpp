@@ -80,17 +80,12 @@ Boundaries<D> boundariesOf(const Scene& s) {
 // above it. Fourtakas et al.'s density diffusion (terms/DensityDiffusionFourtakas.hpp) reads that
 // as a density deficit below the floor, which drains the bottom layer (a tank at rest, H/dx 20,
 // Wendland: the bottom pressure 19 % low by t sqrt(g/H) = 20). With that form the ghost takes
-// the density of its pressure through the inverse Tait EOS of its phase (the phase of its rest
-// density), as the fluid has; the paper's scenes, without it, keep the source's density.
+// the density of its pressure through the inverse Tait EOS of its phase, as the fluid has; the
+// paper's scenes, without it, keep the source's density.
 template <int D>
 void ghostDensitiesFromPressure(const std::vector<Phase>& phases, InteractionSet<D>& set) {
-  const Phase* phase = &phases[0];
-  for (std::size_t i = set.nFluid; i < set.size(); ++i) {
-    if (set.rho0[i] != phase->rho0)
-      for (const Phase& p : phases)
-        if (p.rho0 == set.rho0[i]) phase = &p;
-    set.rho[i] = TaitEquationOfState::density(set.p[i], *phase);
-  }
+  for (std::size_t i = set.nFluid; i < set.size(); ++i)
+    set.rho[i] = TaitEquationOfState::density(set.p[i], phases[set.phase[i]]);
 }
 
 // The terms' parameters: density diffusion takes c0 (and, in Fourtakas et al.'s form, the

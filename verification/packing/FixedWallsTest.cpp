@@ -25,7 +25,7 @@ TEST(FixedWalls, HydrostaticPressureExtrapolatedIntoTheWall) {
   for (int k = 0; k < 4; ++k)
     for (int i = 0; i < 25; ++i) wall.emplace_back((i + 0.5) * dx, -(k + 0.5) * dx);
   wall.emplace_back(10.0, 10.0);  // far from any fluid: in no pair, left out of the set
-  FixedWalls<2> walls(wall, dx * dx, h, KernelKind::wendland_c2, water, Vec<2>(0.0, -g));
+  FixedWalls<2> walls(wall, dx * dx, h, KernelKind::wendland_c2, {water}, Vec<2>(0.0, -g));
   InteractionSet<2> set;
   for (int j = 0; j < 25; ++j)
     for (int i = 0; i < 25; ++i) {

@@ -9,6 +9,13 @@
 //   v~_w = sum_f v_f W_wf / sum_f W_wf                                              (eq. 22)
 //   v_w = 0 (at rest), or v_w = 2 v_wall - v~_w (no slip, eq. 23) component by component along
 //   the axes a particle's rule reverses (below),  m_w = rho_w V0,  h_w = h.
+// Several phases: a wall particle is of the phase whose fluid weighs most in its sum (the W_wf
+// of eq. 27 by phase, the first phase on a tie), and takes that phase's rho0, K, p0 and
+// viscosity. Adami et al. write eq. (28) for one fluid; with the first phase's EOS at every wall,
+// a wall particle beside a phase of another rest density would have a density, and so a mass
+// m_w and a pair force, of the wrong fluid (the pressure term of fluid i against w scales with
+// m_w / rho_i^2 = V0 rho_w / rho_i^2: 1.5 times too strong for a phase of 1000 against walls of
+// 1500 kg/m^3). Of its own phase, m_w / rho_w = V0 and rho_w ~ rho_i, as in one fluid.
 // The g term extends the fluid's hydrostatic pressure into the wall, so a fluid at rest feels the
 // wall push back with rho g (a mirrored, even pressure would lack it). A wall particle with no
 // fluid in reach has p0, rho0 and v~ = 0, and p_w is not let below p0: near the free surface a
@@ -50,13 +57,14 @@ struct WallVelocityRule {
 template <int D>
 class FixedWalls {
  public:
-  // `position`: the wall particles; V0: the particle volume; h: the smoothing length; g: the body
+  // `position`: the wall particles; V0: the particle volume; h: the smoothing length; `phases`:
+  // the scene's, in the order of the set's phase indices (at least one); g: the body
   // acceleration the fluid feels [m/s^2]. Every wall particle at rest.
   FixedWalls(std::vector<Vec<D>> position, double V0, double h, KernelKind kernel,
-             const Phase& phase, const Vec<D>& g);
+             std::vector<Phase> phases, const Vec<D>& g);
   // The same with a velocity rule and a volume per particle (as many as positions).
   FixedWalls(std::vector<Vec<D>> position, std::vector<WallVelocityRule<D>> velocity,
-             std::vector<double> volume, double h, KernelKind kernel, const Phase& phase,
+             std::vector<double> volume, double h, KernelKind kernel, std::vector<Phase> phases,
              const Vec<D>& g);
 
   // Writes the wall particles after the fluid and its halo of `set` (set.haloEnd()), their state
@@ -82,7 +90,7 @@ class FixedWalls {
   std::vector<double> volume_;                 // empty: all V0
   double V0_ = 0.0, h_;
   KernelKind kernel_;
-  Phase phase_;
+  std::vector<Phase> phases_;
   Vec<D> g_;
   // Scratch between calls: the fluid entries in cells of the kernel support, on a grid fixed by
   // the wall particles alone (their box grown by the support), so that a wall particle sums its

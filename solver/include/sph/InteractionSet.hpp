@@ -23,6 +23,7 @@ struct InteractionSet {
   LineVector<Vec<D>> x, v;
   LineVector<double> rho, p, m, h, mu;
   LineVector<double> rho0;  // the rest density of each entry's phase
+  LineVector<int> phase;    // that phase's place in the scene's list
   LineVector<int> source;   // the fluid particle an entry stands for
   std::size_t nFluid = 0;
   // Scratch of the halo build: per thread, the entries near a face (kept: no allocation a step;
@@ -74,7 +75,7 @@ struct InteractionSet {
   }
   void resize(std::size_t n) {
     x.resize(n), v.resize(n), rho.resize(n), p.resize(n), m.resize(n), h.resize(n), mu.resize(n);
-    rho0.resize(n), source.resize(n);
+    rho0.resize(n), phase.resize(n), source.resize(n);
   }
 };
 

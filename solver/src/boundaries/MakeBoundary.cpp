@@ -45,10 +45,10 @@ std::unique_ptr<Boundary<D>> makeBoundary(const Scene& s, const Boundaries<D>& b
     solids.push_back(box);
   }
   if (!solids.empty()) terms.push_back("obstacles_adami2012");
-  // The walls take the first phase's EOS (eq. 28) and viscosity: solver/SCENES.md, [walls].
+  // A wall particle takes the EOS (eq. 28) and viscosity of the phase beside it: FixedWalls.hpp.
   auto walls = std::make_shared<const FixedWalls<D>>(std::move(lattice.x), std::move(lattice.rule),
                                                      std::move(lattice.volume), s.h0(), s.kernel,
-                                                     s.phases[0], g);
+                                                     s.phases, g);
   return std::make_unique<WallParticles<D>>(
       halo, particles ? GhostPressure<D>(Vec<D>::Zero()) : ghost, std::move(walls),
       std::move(solids), std::string(name(s.wallModel)), std::move(terms));

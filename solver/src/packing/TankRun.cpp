@@ -98,7 +98,7 @@ TankRun::TankRun(const PackingScene& scene, const TankRunOptions& options)
 
   Scene run = runScene(scene, options, lo, hi);
   walls_ = std::make_shared<FixedWalls<2>>(std::move(wall), V0_, h, scene.parameters.kernel,
-                                           run.phases[0], Vec2(0.0, -scene.gravity));
+                                           run.phases, Vec2(0.0, -scene.gravity));
 
   const HydrostaticFields hs = hydrostatic(fluid, V0_, scene.phase, scene.gravity, scene.surface);
   Particles<2> y;
