@@ -44,7 +44,8 @@ TEST(InternalEnergy, IsTheIntegralOfPOverRhoSquared) {
   }
 }
 
-sph::Scene box(const std::string& xFaces, const std::string& gravity, double p0 = 0.0) {
+sph::Scene box(const std::string& xFaces, const std::string& gravity, double p0 = 0.0,
+               const std::string& physics = "") {
   return sph::parseScene(R"(
 name = "energy_box"
 dimension = 2
@@ -65,7 +66,8 @@ p0 = )" + std::to_string(p0) +
 lower = [0.0, 0.0]
 upper = [0.5, 0.5]
 [physics]
-gravity = )" + gravity + R"(
+gravity = )" + gravity + "\n" +
+                             physics + R"(
 [numerics]
 dx = 0.1
 end_time = 1.0
@@ -109,6 +111,22 @@ TEST(EnergyBudget, NamesEnergyFromNowhere) {
   EXPECT_NE(failure->message.find("energy growth"), std::string::npos) << failure->message;
   // Moving at the start's height: energy the run never had.
   EXPECT_TRUE(budget.check(particleAt(1.0, 0.1), {7}, 0.6, 20));
+  EXPECT_NE(failure->message.find("the time step amplifies"), std::string::npos);
+}
+
+// Lifted at rest with a density diffusion term: the potential energy rose with no motion to
+// account for it, which the message tells apart from an amplified oscillation (the term does this
+// to a tank at rest: EnergyBudget.cpp).
+TEST(EnergyBudget, NamesPotentialEnergyGainedAtRest) {
+  const sph::Scene scene = box("free_slip", "[0.0, -9.81]", 0.0,
+                               "density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"\n");
+  const sph::EnergyBudget<2> budget(scene, particleAt(1.0, 0.0));
+  const auto failure = budget.check(particleAt(1.01, 0.0), {7}, 0.6, 20);
+  ASSERT_TRUE(failure);
+  EXPECT_EQ(failure->cause, sph::FailureCause::energy_growth);
+  EXPECT_NE(failure->message.find("potential energy rose by 0.0981"), std::string::npos)
+      << failure->message;
+  EXPECT_EQ(failure->message.find("the time step amplifies"), std::string::npos);
 }
 
 // With a background pressure the internal energy is measured from its minimum (p = 0), not from
