@@ -63,15 +63,15 @@ inline std::string restingTankScene(const std::string& model, int cells, double 
   return s.str();
 }
 
-// Two layers at rest in the same tank, each H/2 deep: a light phase (rho0 `light`) over a heavy
-// one (1500 kg/m^3, the paper's two fluids' heavy phase), listed in the scene with the heavy phase
+// Two layers at rest in the same tank, each H/2 deep: a light phase (1000 kg/m^3) over a heavy
+// one (1500, the paper's two fluids), listed in the scene with the heavy phase
 // first or second (the fluid blocks in the same order either way), the named model's kernel and
 // density diffusion (Wendland C2 at h/dx 2, Fourtakas et al.'s delta 0.1 within each phase), one
 // c0 = 10 sqrt(2 g H) for both. The heavy layer starts at the pressure of the light one above it
 // (its `surface` the height of light fluid of its weight). The floor reads g (rho_l + rho_h) H/2.
 inline std::string layeredTankScene(const std::string& model, int cells, double endTime,
-                                    bool heavyFirst, double light = 1000.0) {
-  const double H = 1.0, g = 9.81, c0 = 10 * std::sqrt(2 * g * H), heavy = 1500.0;
+                                    bool heavyFirst) {
+  const double H = 1.0, g = 9.81, c0 = 10 * std::sqrt(2 * g * H), light = 1000.0, heavy = 1500.0;
   std::ostringstream s;
   s.precision(17);
   s << "name = \"layered_tank\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [1.0, 1.5]\n"
