@@ -3,17 +3,20 @@
 // mirror-ghost walls on the sides and the floor with the hydrostatic ghost correction
 // (ghost_pressure = "hydrostatic", SCENES.md), open top, g = 9.81 m/s^2, started on the lattice at
 // the hydrostatic pressure, c0 = 10 sqrt(g H) (Mach 0.1 for speeds up to sqrt(g H)), the default
-// acoustic CFL 0.25. Measured over the second half of the run (100 samples in all):
+// acoustic CFL 0.25, the energy budget checked as `sph run` checks it. Measured over the second
+// half of the run (100 samples in all):
 //  * the spurious speed max|u| / sqrt(g H);
 //  * the bottom pressure: the mean over the particles within dx of the floor of p_i + rho0 g y_i
 //    (each taken hydrostatically to y = 0), against rho0 g H, the largest |p_b / (rho0 g H) - 1|.
 // Bars (issue 31): max|u| < 0.01 sqrt(g H) and the bottom pressure within 1 % of rho0 g H.
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "FlowCases.hpp"
+#include "sph/EnergyBudget.hpp"
 
 namespace sph::verification::tank_at_rest {
 
@@ -98,7 +101,14 @@ inline std::string sceneText(const Case& c, const Model& m) {
 
 inline Outcome run(const Case& c, const Model& m) {
   const auto start = std::chrono::steady_clock::now();
-  Simulation<2> sim(parseScene(sceneText(c, m), "tank_at_rest"));
+  const Scene scene = parseScene(sceneText(c, m), "tank_at_rest");
+  Simulation<2> sim(scene);
+  // The energy budget's check, as `sph run` makes it (Run.cpp): at every series record.
+  const EnergyBudget<2> energy(scene, sim.particles());
+  sim.setCheck([&](const Particles<2>& s, double t, long step) -> std::optional<Failure> {
+    if (step % scene.seriesEvery != 0) return std::nullopt;
+    return energy.check(s, sim.ids(), t, step);
+  });
   const double T = c.horizon * std::sqrt(kH / kG), dx = kH / c.cells;
   const int samples = 100;
   Outcome out;

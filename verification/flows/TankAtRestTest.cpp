@@ -1,10 +1,13 @@
 // Issue 31 (quick tier): the tank at rest of TankAtRest.hpp at H/dx 20, aspect 1:1, with the
 // named model (the paper's terms with Fourtakas et al.'s density diffusion, delta 0.1) and
-// Wendland C2 at h/dx 2, to t sqrt(g/H) = 30 instead of 100 (about a third of the time: some 6 s
-// on one quiet core; the full horizon and the matrix over kernels, aspects and resolutions are in
-// TankAtRestNightlyTest.cpp). Measured to 100: max|u| 3.8e-3 sqrt(gH), bottom pressure 0.73 %
-// off (validation/stability/tank_at_rest_study.py); the quick horizon's second half starts at 15,
-// after the start's acoustic transient has decayed (max|u| 1e-3 by t sqrt(g/H) = 4).
+// Wendland C2 at h/dx 2, its energy budget checked as `sph run` checks it. The named model itself
+// to the bar's t sqrt(g/H) = 100 (some 20 s of one core): it is what a user's `sph run` of a tank
+// does, and the budget's check stopped it at 45 before a density diffusion's lift went uncharged
+// (EnergyBudget.cpp). Its variants to 30 (the full horizon and the matrix over kernels, aspects
+// and resolutions are in TankAtRestNightlyTest.cpp). Measured to 100: max|u| 3.8e-3 sqrt(gH),
+// bottom pressure 0.73 % off (validation/stability/tank_at_rest_study.py); the second half of the
+// short horizon starts at 15, after the start's acoustic transient has decayed (max|u| 1e-3 by
+// t sqrt(g/H) = 4).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -15,22 +18,23 @@
 namespace sph::verification::tank_at_rest {
 namespace {
 
-void expectStill(const Model& m) {
+void expectStill(const Model& m, double horizon = 30.0) {
   Results r;
-  const Case c{1.0, 20, wendland, 30.0};
+  const Case c{1.0, 20, wendland, horizon};
   const Outcome o = run(c, m);
   std::printf("%s: ran %d to %.1f, max|u|/sqrt(gH) %.3e, bottom pressure %.3e, %.1f s\n",
               m.name.c_str(), o.ran, o.stoppedAt, o.speed, o.bottom, o.seconds);
   ASSERT_TRUE(o.ran) << o.why;
   const std::string what = "tank at rest, H/dx 20, 1:1, wendland_c2, " + m.name;
-  EXPECT_TRUE(r.check(what + ": max|u| / sqrt(gH), second half of t sqrt(g/H) = 30", o.speed, "<",
-                      speedBar, "issue 31's bar (0.01 sqrt(gH))"));
-  EXPECT_TRUE(r.check(what + ": max |p_bottom / (rho0 g H) - 1|, second half", o.bottom, "<",
+  const std::string half = "second half of t sqrt(g/H) = " + std::to_string(int(horizon));
+  EXPECT_TRUE(r.check(what + ": max|u| / sqrt(gH), " + half, o.speed, "<", speedBar,
+                      "issue 31's bar (0.01 sqrt(gH))"));
+  EXPECT_TRUE(r.check(what + ": max |p_bottom / (rho0 g H) - 1|, " + half, o.bottom, "<",
                       bottomPressureBar, "issue 31's bar (1 % of rho g H)"));
 }
 
 TEST(TankAtRest, NamedModelHoldsStillAtHOverDx20) {
-  expectStill(fourtakas);
+  expectStill(fourtakas, 100.0);
 }
 
 // The same with position Verlet at the default acoustic CFL 0.25.

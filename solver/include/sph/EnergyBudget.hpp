@@ -30,7 +30,9 @@ class EnergyBudget {
   // energy_growth when E has grown since the start by more than the energy that was there to
   // convert, K0 + U0 + W (kinetic and internal at the start, plus the body force's work since):
   // in a sound run K + U = K0 + U0 + W - (dissipated) <= K0 + U0 + W, so the check fires only
-  // when K + U reaches twice that. `ids` name the particles as Failure does.
+  // when K + U reaches twice that. With a density diffusion term a negative W (the fluid lifted:
+  // the term does it without a force's work) counts as none. `ids` name the particles as Failure
+  // does.
   std::optional<Failure> check(const Particles<D>& s, const std::vector<int>& ids, double t,
                                long step) const;
 
