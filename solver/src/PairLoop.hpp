@@ -802,10 +802,14 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
               for (int l = 0; l < live; ++l)
                 at(w.rate, rateWidth * sizeof(double) / 16, l)[ownAt + o] += sj.own[o][l];
           } else {
+            // {rho, h, x, y} a lane as in 2-D, then z: the same additions, in the same order.
             const Vd jZ = sj.v[2];
+            transpose(jRho, jH, jX, jY);
+            const Vd lane[4] = {jRho, jH, jX, jY};
             for (int l = 0; l < live; ++l) {
               double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
-              rate[0] += jRho[l], rate[1] += jH[l], rate[2] += jX[l], rate[3] += jY[l];
+              const Vd updated = load(rate) + lane[l];
+              __builtin_memcpy(rate, &updated, sizeof updated);
               rate[4] += jZ[l];
               for (int o = 0; o < own; ++o) rate[ownAt + o] += sj.own[o][l];
             }
