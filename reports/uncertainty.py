@@ -32,6 +32,7 @@ import math
 FS = 1.25  # Roache's factor of safety for three or more resolutions (Celik et al. 2008, eq. 7)
 GCI_FACTOR = 1.15  # V&V 20-2009 section 5: u_num = GCI / 1.15 for Fs = 1.25
 K_COVERAGE = 2.0  # E +- 2 u_val: about 95 % for a near-normal error (module docstring)
+NORMAL_95 = 1.96  # half width of a normal distribution's 2.5-97.5 % interval in standard deviations
 MONOTONIC, OSCILLATORY, DIVERGENT, CONVERGED = "monotonic", "oscillatory", "divergent", "no change"
 
 

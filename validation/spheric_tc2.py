@@ -15,6 +15,11 @@ Definitions (the same for the experiment and the runs):
                               of a noisy record, and 2 s its noise; one record, no repeats, so no run-to-run scatter
   error norm                  RMS of smoothed run minus smoothed experiment over the experiment's samples in
                               [0, T], T the shortest end time of the runs compared (all runs that reach 1 s)
+  validation (V&V 20)         the arrivals of H2, H3 and P1 and P1's first peak of each model's three finest runs,
+                              the smoke run included (it reaches the box), through reports/uncertainty.py: u_num from
+                              their GCI; u_D of an arrival the record's sampling, dt / sqrt(12) for a crossing read
+                              at 1 ms samples (the data state no uncertainty of the time origin, the door's lift,
+                              so none is added); u_D of the peak the P1 band read as a 95 % interval, width / 3.92
 """
 from __future__ import annotations
 
@@ -23,6 +28,7 @@ import math
 import numpy as np
 
 import references
+from uncertainty import NORMAL_95
 
 HEIGHTS = ("H1", "H2", "H3", "H4")
 PRESSURES = tuple(f"P{k}" for k in range(1, 9))
@@ -58,13 +64,14 @@ def first_peak(t: np.ndarray, v: np.ndarray, at: float) -> float:
 
 
 def p1_band() -> tuple:
-    """(low, high, arrival) of the experiment's first P1 peak (module docstring)."""
+    """(low, high, arrival, smoothed first peak) of the experiment's P1 (module docstring)."""
     t, p = experiment("P1")
     at = arrival(t, p, WET_PRESSURE)
     s = smooth(t, p)
     m = (t >= at) & (t <= at + NOISE_WINDOW_S)
     sigma = float(np.std(p[m] - s[m]))
-    return first_peak(t, s, at) - 2 * sigma, first_peak(t, p, at) + 2 * sigma, at
+    peak = first_peak(t, s, at)
+    return peak - 2 * sigma, first_peak(t, p, at) + 2 * sigma, at, peak
 
 
 def error_norm(run, probe: str, until: float) -> float:
@@ -77,8 +84,9 @@ def error_norm(run, probe: str, until: float) -> float:
 
 def spheric_dam_break(res, runs: list, common_checks):
     exp_arrival = {g: arrival(*experiment(g), WET_HEIGHT) for g in HEIGHTS[:3]}
-    low, high, exp_arrival["P1"] = p1_band()
+    low, high, exp_arrival["P1"], exp_peak = p1_band()
     by_dx = sorted(runs, key=lambda r: r.dx)
+    figures = {}  # scene name -> its row's figures
     finest = {}  # model -> its finest run that is not the smoke run
     for run in by_dx:
         if not smoke(run):
@@ -115,6 +123,8 @@ def spheric_dam_break(res, runs: list, common_checks):
                       abs(fig["H4_start_m"] - column_depth(run)) / run.dx, "<=", 0.25,
                       "WallProbeTest: the fluid fraction crosses 1/2 within dx/4 of a resting surface")
         res.row(run, **fig)
+        figures[run.scene_name] = fig
+    validate_against_experiment(res, by_dx, figures, exp_arrival, (low, high, exp_peak))
     # Error norms against the experiment, per model, over the window all its long runs cover.
     for m in sorted({model(r) for r in runs}):
         study = [r for r in by_dx if model(r) == m and not smoke(r)]
@@ -129,6 +139,29 @@ def spheric_dam_break(res, runs: list, common_checks):
                 res.check(f"{study[0].scene_name} vs {study[-1].scene_name}",
                           f"{g} RMS error over [0, {until:g}] s: finest / coarsest", err[0] / err[-1], "<", 1.0,
                           "issue 36 bar: the error norms decrease with dx")
+
+
+def validate_against_experiment(res, by_dx: list, figures: dict, exp_arrival: dict, band: tuple):
+    """V&V 20 entries (module docstring), one per model and figure; a model with fewer than three runs gets none.
+    `band` is the P1 band's (low, high) and the experiment's smoothed first peak."""
+    sampling = {}
+    for g in ("H2", "H3", "P1"):
+        t, _ = experiment(g)
+        sampling[g] = float(np.median(np.diff(t)))
+    for m in sorted({model(r) for r in by_dx}):
+        mine = [r for r in by_dx if model(r) == m]
+        for g in ("H2", "H3", "P1"):
+            level = "p > 1 kPa" if g.startswith("P") else "h > 0.02 m"
+            res.compare(f"SPHERIC test 2 ({m}): {g} arrival time ({level})", "s", "dx [m]",
+                        [(r.dx, figures[r.scene_name][f"arrival_{g}_s"]) for r in mine], exp_arrival[g],
+                        sampling[g] / math.sqrt(12.0), f"Kleefsman et al. 2005 {g} record, first {level}",
+                        f"the record's sampling, {1e3 * sampling[g]:.2f} ms / sqrt(12); no uncertainty of the time "
+                        "origin is stated")
+        res.compare(f"SPHERIC test 2 ({m}): P1 first peak (11 ms smoothed)", "Pa", "dx [m]",
+                    [(r.dx, figures[r.scene_name]["P1_first_peak_Pa"]) for r in mine],
+                    band[2], (band[1] - band[0]) / (2 * NORMAL_95),
+                    "Kleefsman et al. 2005 P1, smoothed first peak",
+                    f"the P1 band [{band[0]:.0f}, {band[1]:.0f}] Pa read as a 95 % interval: width / 3.92")
 
 
 def smoke(run) -> bool:

@@ -32,6 +32,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "reports"))
 import references  # noqa: E402  (reference_data/ loader and its scalings)
 from runfile import NAMED_SUFFIX, Run, family, in_verdict, model_of, paper_twin, read_run  # noqa: E402
 import spheric_tc2  # noqa: E402  (SPHERIC test 2, validation/spheric_tc2.py)
+from uncertainty import NORMAL_95  # noqa: E402
 
 
 # ----------------------------------------------------------------------------------------------------------------
@@ -69,7 +70,6 @@ GUARDS = {
 # the experiments state without an uncertainty, and c0, h/dx and the viscosities are numerical choices, not inputs
 # of the physical system. No input uncertainty is propagated: 0, and the table says so.
 U_INPUT_NOTE = "0: the experiments state H, g, rho0 without an uncertainty; c0, h/dx, viscosities are numerical choices"
-NORMAL_95 = 1.96  # half width of a normal distribution's 2.5-97.5 % interval in standard deviations
 
 
 class Results:
