@@ -7,10 +7,11 @@
 //   sph_bench_3d --force SCENE [--threads 1,2]
 //       the force evaluation alone on the scene's start, ns a fluid particle, best of 5 batches
 //   sph_bench_3d --run SCENE [--threads 1,2] [--end-time T]
-//       the case end to end as `sph run` does it (set-up, run, probes, output), wall time, steps
+//       the case end to end as `sph run` does it (set-up, run, probes, output), wall time
 //
 // One process a scene for --memory: the peak RSS is the process's. Timings are for a quiet
-// machine (perf/README.md); the memory and the counts do not depend on the load.
+// machine (perf/README.md); the memory and the counts do not depend on the load. The idle threads
+// wait as `sph`'s do (WaitPolicy.hpp) unless OMP_WAIT_POLICY or GOMP_SPINCOUNT is set.
 #include <omp.h>
 #include <unistd.h>
 
@@ -28,6 +29,7 @@
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
 #include "sph/Simulation.hpp"
+#include "sph/WaitPolicy.hpp"
 
 namespace {
 
@@ -140,6 +142,7 @@ int run(const std::string& path, const std::vector<int>& threads, double endTime
 }  // namespace
 
 int main(int argc, char** argv) {
+  sph::chooseWaitPolicy(argv);  // first: it may execute the program again
   std::string mode, scene;
   std::vector<int> threads{1, 2};
   double endTime = 1.0;
