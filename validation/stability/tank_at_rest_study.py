@@ -17,10 +17,10 @@ FIELDS = ["model", "kernel", "aspect", "cells", "horizon", "ran", "stopped_at", 
           "verdict"]
 
 
-def one(tool, model, kernel, aspect, cells, horizon):
+def one(tool, model, kernel, aspect, cells, horizon, h_over_dx, cfl, dimension):
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_WAIT_POLICY="passive")
-    r = subprocess.run([tool, model, kernel, str(aspect), str(cells), str(horizon)], capture_output=True,
-                       text=True, env=env)
+    r = subprocess.run([tool, model, kernel, str(aspect), str(cells), str(horizon), h_over_dx or "-", str(cfl),
+                        str(dimension)], capture_output=True, text=True, env=env)
     if r.returncode != 0:
         sys.exit(f"tank_at_rest_study {model} {kernel} {aspect} {cells}: exit {r.returncode}: {r.stderr}")
     return r.stdout.strip()
@@ -34,15 +34,18 @@ def main():
     a.add_argument("--aspects", default="1,4")
     a.add_argument("--cells", default="20")
     a.add_argument("--horizon", type=float, default=100.0)
+    a.add_argument("--h-over-dx", default=None, help="h/dx for every kernel (default: each kernel's own)")
+    a.add_argument("--cfl", type=float, default=0.25, help="acoustic CFL number")
+    a.add_argument("--dimension", type=int, default=2, choices=(2, 3), help="3: tanks ASPECT x 1 x 1 H")
     a.add_argument("--jobs", type=int, default=2)
     a.add_argument("--out", default="tank_at_rest.csv")
     o = a.parse_args()
     cases = [(m, k, float(asp), int(n)) for n in o.cells.split(",") for asp in o.aspects.split(",")
              for k in o.kernels.split(",") for m in o.models.split(",")]
     # the largest first, so that the pool ends together
-    cases.sort(key=lambda c: -c[2] * c[3] ** 3)
+    cases.sort(key=lambda c: -c[2] * c[3] ** (o.dimension + 1))
     with concurrent.futures.ThreadPoolExecutor(o.jobs) as pool:
-        lines = list(pool.map(lambda c: one(o.tool, *c, o.horizon), cases))
+        lines = list(pool.map(lambda c: one(o.tool, *c, o.horizon, o.h_over_dx, o.cfl, o.dimension), cases))
     rows = [dict(zip(FIELDS, line.split(","))) for line in lines]
     with open(o.out, "w") as f:
         f.write(",".join(FIELDS) + "\n" + "\n".join(lines) + "\n")

@@ -1,19 +1,20 @@
 #pragma once
-// A tank of water at rest (issue 31's first bar): depth H = 1 m, width aspect x H, free-slip
-// mirror-ghost walls on the sides and the floor with the hydrostatic ghost correction
-// (ghost_pressure = "hydrostatic", SCENES.md), open top, g = 9.81 m/s^2, started on the lattice at
-// the hydrostatic pressure, c0 = 10 sqrt(g H) (Mach 0.1 for speeds up to sqrt(g H)), the default
-// acoustic CFL 0.25, the energy budget checked as `sph run` checks it. Measured over the second
-// half of the run (100 samples in all):
+// A tank of water at rest (issue 31's first bar): depth H = 1 m, width aspect x H (in 3-D aspect x
+// H by H, z up), free-slip mirror-ghost walls on the sides and the floor with the hydrostatic ghost
+// correction (ghost_pressure = "hydrostatic", SCENES.md), open top, g = 9.81 m/s^2, started on the
+// lattice at the hydrostatic pressure, c0 = 10 sqrt(g H) (Mach 0.1 for speeds up to sqrt(g H)), the
+// default acoustic CFL 0.25, the energy budget checked as `sph run` checks it. Measured over the
+// second half of the run (100 samples in all):
 //  * the spurious speed max|u| / sqrt(g H);
-//  * the bottom pressure: the mean over the particles within dx of the floor of p_i + rho0 g y_i
-//    (each taken hydrostatically to y = 0), against rho0 g H, the largest |p_b / (rho0 g H) - 1|.
+//  * the bottom pressure: the mean over the particles within dx of the floor of p_i + rho0 g z_i
+//    (each taken hydrostatically to z = 0), against rho0 g H, the largest |p_b / (rho0 g H) - 1|.
 // Bars (issue 31): max|u| < 0.01 sqrt(g H) and the bottom pressure within 1 % of rho0 g H.
 #include <chrono>
 #include <cmath>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "FlowCases.hpp"
 #include "sph/EnergyBudget.hpp"
@@ -69,6 +70,14 @@ struct Case {
   int cells = 20;       // H / dx
   Kernel kernel = quadratic;
   double horizon = 100.0;  // t sqrt(g / H) at the end
+  double cfl = 0.25;       // numerics.cfl_acoustic, the default
+  int dimension = 2;       // 3: a tank aspect x 1 x 1 H
+};
+
+// One of the 100 samples: t sqrt(g/H), max|u| / sqrt(g H) and where it is (x and the height z),
+// p_b / (rho0 g H) - 1.
+struct Sample {
+  double t, speed, x, z, bottom;
 };
 
 struct Outcome {
@@ -78,34 +87,49 @@ struct Outcome {
   double speed = 0.0;      // max|u| / sqrt(g H), second half
   double bottom = 0.0;     // max |p_b / (rho0 g H) - 1|, second half
   double seconds = 0.0;    // wall time
+  std::vector<Sample> series;
   bool passes() const { return ran && speed < speedBar && bottom < bottomPressureBar; }
 };
 
 inline std::string sceneText(const Case& c, const Model& m) {
   const double c0 = 10 * std::sqrt(kG * kH), T = c.horizon * std::sqrt(kH / kG);
+  const bool solid = c.dimension == 3;  // 3-D: the tank is aspect x 1 x 1, H along z
+  const std::string up = solid ? "z" : "y", across = solid ? "0.0, " : "";
   std::ostringstream s;
   s.precision(17);
-  s << "name = \"tank_at_rest\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = ["
-    << c.aspect * kH << ", " << 1.5 * kH << "]\n"
-    << "x_lower = \"free_slip\"\nx_upper = \"free_slip\"\ny_lower = \"free_slip\"\n"
-    << "y_upper = \"open\"\nghost_pressure = \"hydrostatic\"\n"
+  auto point = [&](double x, double breadth, double height) {
+    std::ostringstream q;
+    q.precision(17);
+    q << "[" << x << ", " << (solid ? std::to_string(breadth) + ", " : "") << height << "]";
+    return q.str();
+  };
+  s << "name = \"tank_at_rest\"\ndimension = " << c.dimension
+    << "\n[domain]\nlower = " << point(0.0, 0.0, 0.0)
+    << "\nupper = " << point(c.aspect * kH, kH, 1.5 * kH) << "\n"
+    << "x_lower = \"free_slip\"\nx_upper = \"free_slip\"\n"
+    << (solid ? "y_lower = \"free_slip\"\ny_upper = \"free_slip\"\n" : "") << up
+    << "_lower = \"free_slip\"\n"
+    << up << "_upper = \"open\"\nghost_pressure = \"hydrostatic\"\n"
     << "[[phase]]\nname = \"water\"\nrho0 = " << kRho0 << "\nc0 = " << c0 << "\nmu = 8.9e-4\n"
-    << "[[fluid]]\nlower = [0.0, 0.0]\nupper = [" << c.aspect * kH << ", " << kH << "]\n"
+    << "[[fluid]]\nlower = " << point(0.0, 0.0, 0.0) << "\nupper = " << point(c.aspect * kH, kH, kH)
+    << "\n"
     << "initial_pressure = \"hydrostatic\"\n"
-    << "[physics]\ngravity = [0.0, " << -kG << "]\n"
+    << "[physics]\ngravity = [0.0, " << across << -kG << "]\n"
     << m.physics << "[numerics]\n"
     << m.numerics << "kernel = \"" << c.kernel.name << "\"\ndx = " << kH / c.cells
-    << "\nh_over_dx = " << c.kernel.hOverDx << "\nend_time = " << T << "\n";
+    << "\nh_over_dx = " << c.kernel.hOverDx << "\ncfl_acoustic = " << c.cfl << "\nend_time = " << T
+    << "\n";
   return s.str();
 }
 
-inline Outcome run(const Case& c, const Model& m) {
+template <int D>
+Outcome runIn(const Case& c, const Model& m) {
   const auto start = std::chrono::steady_clock::now();
   const Scene scene = parseScene(sceneText(c, m), "tank_at_rest");
-  Simulation<2> sim(scene);
+  Simulation<D> sim(scene);
   // The energy budget's check, as `sph run` makes it (Run.cpp): at every series record.
-  const EnergyBudget<2> energy(scene, sim.particles());
-  sim.setCheck([&](const Particles<2>& s, double t, long step) -> std::optional<Failure> {
+  const EnergyBudget<D> energy(scene, sim.particles());
+  sim.setCheck([&](const Particles<D>& s, double t, long step) -> std::optional<Failure> {
     if (step % scene.seriesEvery != 0) return std::nullopt;
     return energy.check(s, sim.ids(), t, step);
   });
@@ -118,20 +142,29 @@ inline Outcome run(const Case& c, const Model& m) {
       out.ran = false;
       break;
     }
-    if (2 * k <= samples) continue;
     const auto& p = sim.particles();
+    Sample s{sim.time() / std::sqrt(kH / kG), 0.0, 0.0, 0.0, 0.0};
     double sum = 0.0;
     int n = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      out.speed = std::max(out.speed, p.v[i].norm() / std::sqrt(kG * kH));
-      if (p.r[i][1] < dx) sum += p.p[i] + kRho0 * kG * p.r[i][1], ++n;
+      const double u = p.v[i].norm() / std::sqrt(kG * kH);
+      const double z = p.r[i][D - 1];
+      if (u > s.speed) s.speed = u, s.x = p.r[i][0], s.z = z;
+      if (z < dx) sum += p.p[i] + kRho0 * kG * z, ++n;
     }
-    const double bottom = n > 0 ? sum / n : 0.0;
-    out.bottom = std::max(out.bottom, std::abs(bottom / (kRho0 * kG * kH) - 1.0));
+    s.bottom = (n > 0 ? sum / n : 0.0) / (kRho0 * kG * kH) - 1.0;
+    out.series.push_back(s);
+    if (2 * k <= samples) continue;
+    out.speed = std::max(out.speed, s.speed);
+    out.bottom = std::max(out.bottom, std::abs(s.bottom));
   }
   out.stoppedAt = sim.time() / std::sqrt(kH / kG);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+inline Outcome run(const Case& c, const Model& m) {
+  return c.dimension == 3 ? runIn<3>(c, m) : runIn<2>(c, m);
 }
 
 }  // namespace sph::verification::tank_at_rest

@@ -1,9 +1,13 @@
 // One tank at rest (TankAtRest.hpp) per call, as a CSV line, for the study over models, kernels,
 // aspects and resolutions (validation/stability/tank_at_rest_study.py runs the matrix):
-//   tank_at_rest_study MODEL KERNEL ASPECT CELLS [HORIZON [H_OVER_DX]]
-// MODEL paper | mc | fourtakas | lind | delta_plus | fourtakas_lind | fourtakas_delta_plus (the
-// last four with particle shifting), KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx,
-// HORIZON t sqrt(g/H) (100), H_OVER_DX the kernel's h/dx (TankAtRest.hpp's for the kernel).
+//   tank_at_rest_study MODEL KERNEL ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]
+// MODEL paper | mc | fourtakas | fourtakas_pv | fourtakas_vv | lind | delta_plus | fourtakas_lind |
+// fourtakas_delta_plus (_pv and _vv with position and velocity Verlet, the last four with particle
+// shifting), KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx, HORIZON t sqrt(g/H)
+// (100), H_OVER_DX the kernel's h/dx (- or TankAtRest.hpp's for the kernel), CFL the acoustic one
+// (0.25), DIMENSION 2 or 3 (3: a tank ASPECT x 1 x 1 H). With TANK_AT_REST_SERIES=FILE set, the 100
+// samples go to FILE as CSV (t sqrt(g/H), max|u|/sqrt(gH) and its x and height, p_b/(rho0 g H) -
+// 1): where and when a tank starts to move.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -12,17 +16,20 @@
 
 int main(int argc, char** argv) {
   using namespace sph::verification::tank_at_rest;
-  if (argc < 5 || argc > 7) {
+  if (argc < 5 || argc > 9) {
     std::fprintf(stderr,
-                 "usage: tank_at_rest_study paper|mc|fourtakas|lind|delta_plus|fourtakas_lind|"
+                 "usage: tank_at_rest_study "
+                 "paper|mc|fourtakas|fourtakas_pv|fourtakas_vv|lind|delta_plus|fourtakas_lind|"
                  "fourtakas_delta_plus quadratic|cubic_spline|wendland_c2 "
-                 "ASPECT CELLS [HORIZON [H_OVER_DX]]\n");
+                 "ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]\n");
     return 2;
   }
   const std::string model = argv[1], kernel = argv[2];
   const Model* m = model == "paper"                  ? &paper
                    : model == "mc"                   ? &molteniColagrossi
                    : model == "fourtakas"            ? &fourtakas
+                   : model == "fourtakas_pv"         ? &fourtakasVerlet
+                   : model == "fourtakas_vv"         ? &fourtakasVelocityVerlet
                    : model == "lind"                 ? &paperLind
                    : model == "delta_plus"           ? &paperDeltaPlus
                    : model == "fourtakas_lind"       ? &fourtakasLind
@@ -38,13 +45,31 @@ int main(int argc, char** argv) {
     return 2;
   }
   Case c{std::atof(argv[3]), std::atoi(argv[4]), *k, argc >= 6 ? std::atof(argv[5]) : 100.0};
-  if (argc == 7) c.kernel.hOverDx = std::atof(argv[6]);
-  if (!(c.aspect > 0) || c.cells < 2 || !(c.horizon > 0) || !(c.kernel.hOverDx > 0)) {
+  if (argc >= 7 && std::string(argv[6]) != "-") c.kernel.hOverDx = std::atof(argv[6]);
+  if (argc >= 8) c.cfl = std::atof(argv[7]);
+  if (argc == 9) c.dimension = std::atoi(argv[8]);
+  if (!(c.aspect > 0) || c.cells < 2 || !(c.horizon > 0) || !(c.kernel.hOverDx > 0) ||
+      !(c.cfl > 0) || (c.dimension != 2 && c.dimension != 3)) {
     std::fprintf(stderr,
-                 "tank_at_rest_study: ASPECT, HORIZON and H_OVER_DX must be > 0, CELLS >= 2\n");
+                 "tank_at_rest_study: ASPECT, HORIZON, H_OVER_DX and CFL must be > 0, CELLS >= 2, "
+                 "DIMENSION 2 or 3\n");
     return 2;
   }
   const Outcome o = run(c, *m);
+  if (const char* path = std::getenv("TANK_AT_REST_SERIES")) {
+    std::FILE* f = std::fopen(path, "w");
+    if (!f) {
+      std::fprintf(stderr, "tank_at_rest_study: cannot write TANK_AT_REST_SERIES '%s'\n", path);
+      return 1;
+    }
+    std::fprintf(f, "t_sqrt_g_over_H,speed,x,z,bottom\n");
+    for (const Sample& s : o.series)
+      std::fprintf(f, "%.4g,%.4e,%.4f,%.4f,%.4e\n", s.t, s.speed, s.x, s.z, s.bottom);
+    if (std::fclose(f) != 0) {
+      std::fprintf(stderr, "tank_at_rest_study: writing '%s' failed\n", path);
+      return 1;
+    }
+  }
   std::printf("%s,%s,%g,%d,%g,%d,%.4g,%.4e,%.4e,%.1f,%s\n", model.c_str(), kernel.c_str(), c.aspect,
               c.cells, c.horizon, o.ran ? 1 : 0, o.stoppedAt, o.speed, o.bottom, o.seconds,
               o.passes() ? "pass" : "fail");
