@@ -1,13 +1,14 @@
 // One tank at rest (TankAtRest.hpp) per call, as a CSV line, for the study over models, kernels,
 // aspects and resolutions (validation/stability/tank_at_rest_study.py runs the matrix):
 //   tank_at_rest_study MODEL KERNEL ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]
-// MODEL paper | mc | fourtakas | fourtakas_pv | fourtakas_vv | lind | delta_plus | fourtakas_lind |
-// fourtakas_delta_plus (_pv and _vv with position and velocity Verlet, the last four with particle
-// shifting), KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx, HORIZON t sqrt(g/H)
-// (100), H_OVER_DX the kernel's h/dx (- or TankAtRest.hpp's for the kernel), CFL the acoustic one
-// (0.25), DIMENSION 2 or 3 (3: a tank ASPECT x 1 x 1 H). With TANK_AT_REST_SERIES=FILE set, the 100
-// samples go to FILE as CSV (t sqrt(g/H), max|u|/sqrt(gH) and its x and height, p_b/(rho0 g H) -
-// 1): where and when a tank starts to move.
+// MODEL paper | mc | fourtakas | fourtakas_fixed_h | fourtakas_02 | fourtakas_pv | fourtakas_vv |
+// lind | delta_plus | fourtakas_lind | fourtakas_delta_plus (fourtakas with a fixed h, with delta
+// 0.2, with position and velocity Verlet; the last four with particle shifting), KERNEL quadratic |
+// cubic_spline | wendland_c2, CELLS = H/dx, HORIZON t sqrt(g/H) (100), H_OVER_DX the kernel's h/dx
+// (- or TankAtRest.hpp's for the kernel), CFL the acoustic one (0.25), DIMENSION 2 or 3 (3: a tank
+// ASPECT x 1 x 1 H). With TANK_AT_REST_SERIES=FILE set, the 100 samples go to FILE as CSV (t
+// sqrt(g/H), max|u|/sqrt(gH) and its x and height, p_b/(rho0 g H) - 1): where and when a tank
+// starts to move.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -19,7 +20,8 @@ int main(int argc, char** argv) {
   if (argc < 5 || argc > 9) {
     std::fprintf(stderr,
                  "usage: tank_at_rest_study "
-                 "paper|mc|fourtakas|fourtakas_pv|fourtakas_vv|lind|delta_plus|fourtakas_lind|"
+                 "paper|mc|fourtakas|fourtakas_fixed_h|fourtakas_02|fourtakas_pv|fourtakas_vv|lind|"
+                 "delta_plus|fourtakas_lind|"
                  "fourtakas_delta_plus quadratic|cubic_spline|wendland_c2 "
                  "ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]\n");
     return 2;
@@ -28,6 +30,8 @@ int main(int argc, char** argv) {
   const Model* m = model == "paper"                  ? &paper
                    : model == "mc"                   ? &molteniColagrossi
                    : model == "fourtakas"            ? &fourtakas
+                   : model == "fourtakas_fixed_h"    ? &fourtakasFixedH
+                   : model == "fourtakas_02"         ? &fourtakas02
                    : model == "fourtakas_pv"         ? &fourtakasVerlet
                    : model == "fourtakas_vv"         ? &fourtakasVelocityVerlet
                    : model == "lind"                 ? &paperLind
@@ -62,9 +66,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "tank_at_rest_study: cannot write TANK_AT_REST_SERIES '%s'\n", path);
       return 1;
     }
-    std::fprintf(f, "t_sqrt_g_over_H,speed,x,z,bottom\n");
+    std::fprintf(f, "t_sqrt_g_over_H,speed,x,z,bottom,p_min,z_p_min\n");
     for (const Sample& s : o.series)
-      std::fprintf(f, "%.4g,%.4e,%.4f,%.4f,%.4e\n", s.t, s.speed, s.x, s.z, s.bottom);
+      std::fprintf(f, "%.4g,%.4e,%.4f,%.4f,%.4e,%.4e,%.4f\n", s.t, s.speed, s.x, s.z, s.bottom,
+                   s.pMin, s.zMin);
     if (std::fclose(f) != 0) {
       std::fprintf(stderr, "tank_at_rest_study: writing '%s' failed\n", path);
       return 1;
