@@ -11,6 +11,9 @@
 //   H/dx 40, 4:1: quadratic 8.4e-3, 1.7 %;                       cubic 6.7e-3, 0.59 %
 // (4:1 at H/dx 40 not run here for them)
 // so where they fail a bar their cases keep regression bounds of 2.5 times the measured values.
+// In 3-D (a tank 1 x 1 x 1 H) the named model misses the speed bar at H/dx 20: max|u| 0.0157
+// sqrt(gH), bottom pressure 0.71 % (1,133 s of one core, 2026-12-06); it starts to move at
+// t sqrt(g/H) = 48 (verification/README.md), so that case keeps a regression bound on the speed.
 // Not here: 4:1 at H/dx 80 (8 times the 4:1 tank at H/dx 40: about 40 min of one core).
 #include <gtest/gtest.h>
 
@@ -32,7 +35,8 @@ struct NightlyCase {
 
 // The case's name for gtest (and so for ctest): its kernel, aspect and resolution, not its bytes.
 void PrintTo(const NightlyCase& n, std::ostream* out) {
-  *out << n.tank.kernel.name << " " << n.tank.aspect << ":1 H/dx " << n.tank.cells;
+  *out << n.tank.kernel.name << " " << n.tank.aspect << ":1 H/dx " << n.tank.cells
+       << (n.tank.dimension == 3 ? " 3-D" : "");
 }
 
 const char* const bar = "issue 31's bar";
@@ -43,7 +47,8 @@ class TankAtRestNightly : public ::testing::TestWithParam<NightlyCase> {};
 TEST_P(TankAtRestNightly, HoldsStill) {
   const NightlyCase& n = GetParam();
   const Outcome o = run(n.tank, fourtakas);
-  const std::string what = "tank at rest, H/dx " + std::to_string(n.tank.cells) + ", " +
+  const std::string what = std::string(n.tank.dimension == 3 ? "3-D " : "") +
+                           "tank at rest, H/dx " + std::to_string(n.tank.cells) + ", " +
                            std::to_string(int(n.tank.aspect)) + ":1, " + n.tank.kernel.name + ", " +
                            fourtakas.name;
   std::printf("%s: ran %d to %.1f, max|u|/sqrt(gH) %.3e, bottom %.3e, %.1f s\n", what.c_str(),
@@ -58,21 +63,23 @@ TEST_P(TankAtRestNightly, HoldsStill) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, TankAtRestNightly,
-    ::testing::Values(NightlyCase{{1.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{{4.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{{1.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{{1.0, 80, wendland, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{{1.0, 20, quadratic, 100.0}, 5.3e-3, 0.041, regression},
-                      NightlyCase{{4.0, 20, quadratic, 100.0}, 0.046, 0.038, regression},
-                      NightlyCase{{1.0, 40, quadratic, 100.0}, 6.2e-3, 0.040, regression},
-                      NightlyCase{{1.0, 20, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
-                      NightlyCase{
-                          {4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression},
-                      NightlyCase{{1.0, 40, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar}),
+    ::testing::Values(
+        NightlyCase{{1.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{4.0, 20, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{1.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{1.0, 80, wendland, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{1.0, 20, quadratic, 100.0}, 5.3e-3, 0.041, regression},
+        NightlyCase{{4.0, 20, quadratic, 100.0}, 0.046, 0.038, regression},
+        NightlyCase{{1.0, 40, quadratic, 100.0}, 6.2e-3, 0.040, regression},
+        NightlyCase{{1.0, 20, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression},
+        NightlyCase{{1.0, 40, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{1.0, 20, wendland, 100.0, 0.25, 3}, 0.039, bottomPressureBar, regression}),
     [](const ::testing::TestParamInfo<NightlyCase>& i) {
       return i.param.tank.kernel.name + "_aspect" + std::to_string(int(i.param.tank.aspect)) +
-             "_cells" + std::to_string(i.param.tank.cells);
+             "_cells" + std::to_string(i.param.tank.cells) +
+             (i.param.tank.dimension == 3 ? "_3d" : "");
     });
 
 // The named model with particle shifting (ParticleShifting.hpp, each form at its default A),
