@@ -49,18 +49,29 @@ double waterHeight(const Scene& scene, const std::vector<double>& at, const Part
     if (d2 < reach * reach) near.push_back(f), top = std::max(top, s.r[f][up]);
   }
   if (near.empty()) return 0.0;
+  // A floor that is a wall cuts the support of the points near it; each particle's mirror image
+  // beneath the floor fills the cut (as mirror ghosts do), so that phi is 1 down to the floor in
+  // a wet column and a film thinner than the support still counts.
+  const double floor = scene.lower[up], dz = scene.dx / 8.0;
+  const bool mirrored = Boundaries<D>::isWall(scene.faces[up][0]);
   const auto phi = [&](double z) {
     Vec<D> x;
     for (int a = 0; a < up; ++a) x[a] = at[a];
     x[up] = z;
     double sum = 0;
-    for (std::size_t f : near)
-      sum += s.m[f] / s.rho[f] * kernelValue<D>(scene.kernel, (x - s.r[f]).norm(), s.h[f]);
+    for (std::size_t f : near) {
+      Vec<D> r = x - s.r[f];
+      double w = kernelValue<D>(scene.kernel, r.norm(), s.h[f]);
+      if (mirrored) {
+        r[up] = z + s.r[f][up] - 2 * floor;
+        w += kernelValue<D>(scene.kernel, r.norm(), s.h[f]);
+      }
+      sum += s.m[f] / s.rho[f] * w;
+    }
     return sum;
   };
   // Downward from above the highest particle near the line to the floor: the first sample
   // with phi >= 1/2 and the one above it bracket the crossing.
-  const double floor = scene.lower[up], dz = scene.dx / 8.0;
   double zAbove = top + reach, phiAbove = phi(zAbove);
   for (double z = zAbove - dz; z >= floor - 1e-12 * dz; z -= dz) {
     const double here = phi(z);

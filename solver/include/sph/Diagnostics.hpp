@@ -40,7 +40,9 @@ Diagnostics diagnose(const Scene& scene, const Particles<D>& s, const Interactio
 //                  highest z above the floor (the domain's lower face) where the fluid fraction
 //                  phi(z) = sum_f V_f W(|x(z) - r_f|, h_f) is at least 1/2 [m]: phi is 1 inside
 //                  a wet column and falls through 1/2 at its free surface; a lone droplet (phi at
-//                  most V W(0) ~ 0.13 at h/dx 1.33) does not count, nor a film under ~h thick.
+//                  most V W(0) ~ 0.13 at h/dx 1.33) does not count. Where the floor is a wall,
+//                  each particle's mirror image beneath it is in the sum too, so that a film of
+//                  one layer reads its depth (the cut support would leave its phi below 1/2).
 //                  phi is sampled every dx/8 and the crossing interpolated linearly; 0 when dry.
 template <int D>
 double probe(const Scene& scene, const Probe& p, const Particles<D>& s,
