@@ -59,7 +59,7 @@ VARIANTS = [
 # window x = 0.003429 m is 0.6 dx there, 1.2 dx at the paper's a/dx 20; with 1.2 dx at a/dx 10 both models pass the
 # table's 1/18, paper 0.014, named 0.019.)
 # SPHERIC test 2 runs it at the paper's model's three resolutions, dx 0.04 to 2 s and dx 0.02 to 1 s (h/dx 2 in 3-D
-# costs (2/1.33)^3 = 3.4 times the paper's model a step: some 40 min of one core at dx 0.02), and as the smoke run.
+# costs (2/1.33)^3 = 3.4 times the paper's model a step: 1,648 s of one core at dx 0.02), and as the smoke run.
 # h/dx 1.33 would be cheaper and its thinner front arrives sooner (dx 0.02: H2 +3.6 %, P1 +4.2 % against +5.1 % and
 # +5.1 % at h/dx 2; measured 2026-12-06), but Wendland C2 at h/dx 1.33 does not hold a tank at rest: 2-D H/dx 20,
 # bottom pressure 1.5 % (1:1) and max|u| 0.024 sqrt(gH) (4:1); 3-D 1:1:1 H/dx 20, max|u| 0.036 sqrt(gH) (the lattice
