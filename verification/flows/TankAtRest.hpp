@@ -39,8 +39,8 @@ inline const Model fourtakas{
     "paper + Fourtakas delta 0.1",
     paper.physics + "density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"\n"};
 
-// The named model with a fixed h, and with delta 0.2: what moves the time a long-run tank starts
-// to move (verification/README.md).
+// The named model with a fixed h, and with delta 0.2 and 0.05: what moves the time a long-run tank
+// starts to move (verification/README.md).
 inline const Model fourtakasFixedH{
     "paper + Fourtakas delta 0.1, fixed h",
     "artificial_viscosity = 1.0\nmorris_viscosity = true\nvariable_h = false\n"
@@ -48,6 +48,9 @@ inline const Model fourtakasFixedH{
 inline const Model fourtakas02{
     "paper + Fourtakas delta 0.2",
     paper.physics + "density_diffusion = 0.2\ndensity_diffusion_form = \"fourtakas\"\n"};
+inline const Model fourtakas005{
+    "paper + Fourtakas delta 0.05",
+    paper.physics + "density_diffusion = 0.05\ndensity_diffusion_form = \"fourtakas\"\n"};
 
 // The same with position Verlet (integrators/PositionVerlet.hpp) for the time step.
 inline const Model fourtakasVerlet{"paper + Fourtakas delta 0.1, position Verlet",
