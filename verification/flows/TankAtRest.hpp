@@ -31,26 +31,27 @@ struct Model {
 // The paper's model (Lobovsky & Kren 2008, as validation/scenes/dam_break.toml): beta = 1,
 // Morris viscosity, variable h; then with each density diffusion form, delta = 0.1 (Molteni &
 // Colagrossi 2009; Fourtakas et al. 2019 keep it).
-inline const Model paper{
-    "paper", "artificial_viscosity = 1.0\nmorris_viscosity = true\nvariable_h = true\n"};
+// The paper's terms (beta = 1, Morris viscosity) with h variable or fixed.
+inline std::string paperPhysics(bool variableH = true) {
+  return std::string("artificial_viscosity = 1.0\nmorris_viscosity = true\nvariable_h = ") +
+         (variableH ? "true" : "false") + "\n";
+}
+// ... with Fourtakas et al.'s density diffusion at `delta`.
+inline std::string fourtakasPhysics(const std::string& delta, bool variableH = true) {
+  return paperPhysics(variableH) + "density_diffusion = " + delta +
+         "\ndensity_diffusion_form = \"fourtakas\"\n";
+}
+inline const Model paper{"paper", paperPhysics()};
 inline const Model molteniColagrossi{"paper + MC delta 0.1",
                                      paper.physics + "density_diffusion = 0.1\n"};
-inline const Model fourtakas{
-    "paper + Fourtakas delta 0.1",
-    paper.physics + "density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"\n"};
+inline const Model fourtakas{"paper + Fourtakas delta 0.1", fourtakasPhysics("0.1")};
 
 // The named model with a fixed h, and with delta 0.2 and 0.05: what moves the time a long-run tank
 // starts to move (verification/README.md).
-inline const Model fourtakasFixedH{
-    "paper + Fourtakas delta 0.1, fixed h",
-    "artificial_viscosity = 1.0\nmorris_viscosity = true\nvariable_h = false\n"
-    "density_diffusion = 0.1\ndensity_diffusion_form = \"fourtakas\"\n"};
-inline const Model fourtakas02{
-    "paper + Fourtakas delta 0.2",
-    paper.physics + "density_diffusion = 0.2\ndensity_diffusion_form = \"fourtakas\"\n"};
-inline const Model fourtakas005{
-    "paper + Fourtakas delta 0.05",
-    paper.physics + "density_diffusion = 0.05\ndensity_diffusion_form = \"fourtakas\"\n"};
+inline const Model fourtakasFixedH{"paper + Fourtakas delta 0.1, fixed h",
+                                   fourtakasPhysics("0.1", false)};
+inline const Model fourtakas02{"paper + Fourtakas delta 0.2", fourtakasPhysics("0.2")};
+inline const Model fourtakas005{"paper + Fourtakas delta 0.05", fourtakasPhysics("0.05")};
 
 // The same with position Verlet (integrators/PositionVerlet.hpp) for the time step.
 inline const Model fourtakasVerlet{"paper + Fourtakas delta 0.1, position Verlet",
@@ -113,7 +114,9 @@ inline std::string sceneText(const Case& c, const Model& m) {
   auto point = [&](double x, double breadth, double height) {
     std::ostringstream q;
     q.precision(17);
-    q << "[" << x << ", " << (solid ? std::to_string(breadth) + ", " : "") << height << "]";
+    q << "[" << x << ", ";
+    if (solid) q << breadth << ", ";
+    q << height << "]";
     return q.str();
   };
   s << "name = \"tank_at_rest\"\ndimension = " << c.dimension

@@ -13,7 +13,7 @@
 // so where they fail a bar their cases keep regression bounds of 2.5 times the measured values.
 // In 3-D (a tank 1 x 1 x 1 H) the named model misses the speed bar at H/dx 20: max|u| 0.0157
 // sqrt(gH), bottom pressure 0.71 % (1,133 s of one core, 2026-12-06); it starts to move at
-// t sqrt(g/H) = 48 (verification/README.md), so that case keeps a regression bound on the speed.
+// t sqrt(g/H) = 49 (verification/README.md), so that case keeps a regression bound on the speed.
 // Not here: 4:1 at H/dx 80 (8 times the 4:1 tank at H/dx 40: about 40 min of one core).
 #include <gtest/gtest.h>
 

@@ -4,12 +4,11 @@
 // MODEL paper | mc | fourtakas | fourtakas_fixed_h | fourtakas_02 | fourtakas_005 | fourtakas_pv |
 // fourtakas_vv | lind | delta_plus | fourtakas_lind | fourtakas_delta_plus (fourtakas with a fixed
 // h, with delta 0.2 and 0.05, with position and velocity Verlet; the last four with shifting),
-// KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx, HORIZON t sqrt(g/H) (100), H_OVER_DX
-// the kernel's h/dx
-// (- or TankAtRest.hpp's for the kernel), CFL the acoustic one (0.25), DIMENSION 2 or 3 (3: a tank
-// ASPECT x 1 x 1 H). With TANK_AT_REST_SERIES=FILE set, the 100 samples go to FILE as CSV (t
-// sqrt(g/H), max|u|/sqrt(gH) and its x and height, p_b/(rho0 g H) - 1): where and when a tank
-// starts to move.
+// KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx, HORIZON t sqrt(g/H) (100),
+// H_OVER_DX the kernel's h/dx (- or TankAtRest.hpp's for the kernel), CFL the acoustic one (0.25),
+// DIMENSION 2 or 3 (3: a tank ASPECT x 1 x 1 H). With TANK_AT_REST_SERIES=FILE set, the 100 samples
+// go to FILE as CSV (t sqrt(g/H), max|u|/sqrt(gH) and its x and height, p_b/(rho0 g H) - 1, the
+// lowest p/(rho0 g H) and its height): where and when a tank starts to move.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -20,10 +19,8 @@ int main(int argc, char** argv) {
   using namespace sph::verification::tank_at_rest;
   if (argc < 5 || argc > 9) {
     std::fprintf(stderr,
-                 "usage: tank_at_rest_study "
-                 "paper|mc|fourtakas|fourtakas_fixed_h|fourtakas_02|fourtakas_005|fourtakas_pv|"
-                 "fourtakas_vv|lind|"
-                 "delta_plus|fourtakas_lind|"
+                 "usage: tank_at_rest_study paper|mc|fourtakas|fourtakas_fixed_h|fourtakas_02|"
+                 "fourtakas_005|fourtakas_pv|fourtakas_vv|lind|delta_plus|fourtakas_lind|"
                  "fourtakas_delta_plus quadratic|cubic_spline|wendland_c2 "
                  "ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]\n");
     return 2;

@@ -39,7 +39,7 @@ TEST(TankAtRest, NamedModelHoldsStillAtHOverDx20) {
 
 // The named model in 3-D, a tank 1 x 1 x 1 H at H/dx 10 to t sqrt(g/H) = 20 (some 16 s of one
 // core): measured max|u| 7.0e-4 sqrt(gH), bottom pressure 0.56 % off. The 3-D tank at H/dx 20 to
-// 100 is in TankAtRestNightlyTest.cpp (it starts to move at 48).
+// 100 is in TankAtRestNightlyTest.cpp (it starts to move at 49).
 TEST(TankAtRest, NamedModelHoldsStillIn3DAtHOverDx10) {
   expectStill(fourtakas, {1.0, 10, wendland, 20.0, 0.25, 3});
 }
