@@ -100,11 +100,11 @@ struct PairFlops {
 
 // The menu entries the benchmarks time one by one: t = artificial viscosity + 2 Morris viscosity
 // + 4 variable h + 8 x density diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al., 3
-// Fourtakas et al.'s within each phase), and 32 + form for all three with particle shifting's pair
-// sums (t < terms::menuSize, 36).
+// Fourtakas et al.'s within each phase, 4 Antuono et al.), and 40 + form for all three with
+// particle shifting's pair sums (t < terms::menuSize, 45).
 inline TermSwitches menuEntry(int t) {
   constexpr int rates = static_cast<int>(terms::ratesEntries);
-  static_assert(rates == 32 && terms::menuSize == 36);
+  static_assert(rates == 40 && terms::menuSize == 45);
   if (t >= rates) return {true, true, true, static_cast<DensityDiffusion>(t - rates), true};
   return {(t & 1) != 0, (t & 2) != 0, (t & 4) != 0, static_cast<DensityDiffusion>(t / 8)};
 }

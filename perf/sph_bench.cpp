@@ -381,7 +381,8 @@ int main(int argc, char** argv) {
         "cost of each term combination (2e4 particles, 1 thread)",
         "menu index: artificial viscosity + 2 Morris viscosity + 4 variable h + 8 x density "
         "diffusion form (1 Molteni & Colagrossi, 2 Fourtakas et al., 3 Fourtakas et al. within "
-        "each phase); 32 + form: all three with particle shifting's pair sums",
+        "each phase, 4 Antuono et al. with its gradient pass); 40 + form: all three with particle "
+        "shifting's pair sums",
         "ns per particle evaluation",
         "",
         {}};

@@ -71,18 +71,52 @@ ForceEvaluation<D>::ForceEvaluation(KernelKind kernel, TermSwitches terms,
       terms_(terms),
       parameters_(parameters),
       work_(std::make_shared<Workspace>()) {
-  static_assert(terms::optionalSubsets == 8 && terms::DensityDiffusionForms::size == 3,
+  static_assert(terms::optionalSubsets == 8 && terms::DensityDiffusionForms::size == 4,
                 "menuIndex covers every optional term and every form");
   TermSwitches rates = terms;
   rates.concentrationGradient = false;
   loop_ = pair_loop::menuLoop<D>(kernel, menuIndex(rates));
   ownSumsLoop_ = pair_loop::menuLoop<D>(kernel, menuIndex(terms));  // throws off the menu
+  if (terms.densityDiffusion == DensityDiffusion::antuono)
+    gradientLoop_ = pair_loop::densityGradientLoop<D>(kernel);
 }
 
 template <int D>
 void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>& out,
                                     const Vec<D>& g, NeighbourLists lists, bool ownSums) {
+  if (gradientLoop_) densityGradients(set, lists);
   (ownSums ? ownSumsLoop_ : loop_)(parameters_, set, g, lists, *work_, out);
+}
+
+// Every entry's renormalised density gradient, into the workspace, where the pair loop's copy of
+// the entries reads it: the fluid's from its pair sums, a halo entry's its source's (a periodic
+// image's is its source's; a hydrostatic mirror ghost's density continues its source's field
+// across the wall, terms/DensityDiffusionAntuono.hpp). The pass builds the neighbour lists where
+// the rates' pass would, which then reuses them.
+template <int D>
+void ForceEvaluation<D>::densityGradients(const InteractionSet<D>& set, NeighbourLists& lists) {
+  if (!set.ownedParticle.empty())
+    throw std::invalid_argument(
+        "ForceEvaluation: Antuono et al.'s density diffusion needs every fluid entry's "
+        "neighbours, and a set of one process of several has copies of other processes' "
+        "entries without them");
+  Workspace& w = *work_;
+  gradientLoop_(parameters_, set, Vec<D>::Zero(), lists, w, w.gradientSums);
+  w.densityGradient.resize(set.size());
+  const double* sums = w.gradientSums.sums.data();
+  const int width = w.gradientSums.sumsWidth;
+  for (std::size_t i = 0; i < set.nFluid; ++i)
+    w.densityGradient[i] = terms::RenormalisedDensityGradient::gradient<D>(sums + width * i);
+  for (std::size_t k = set.nFluid; k < set.size(); ++k) {
+    const int source = set.source[k];
+    if (source < 0 || static_cast<std::size_t>(source) >= set.nFluid)
+      throw std::invalid_argument(
+          "ForceEvaluation: Antuono et al.'s density diffusion takes a halo entry's density "
+          "gradient from the fluid particle it stands for, and entry " +
+          std::to_string(k) + " stands for none (a wall particle)");
+    w.densityGradient[k] = w.densityGradient[source];
+  }
+  if (lists.skin > 0) lists.reuse = true;
 }
 
 template <int D>

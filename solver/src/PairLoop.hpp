@@ -226,6 +226,10 @@ struct ForceEvaluation<D>::Workspace {
     double hMax;
   };
   LineVector<Extent> extents;
+  // Antuono et al.'s density diffusion: the pass's sums and every entry's renormalised density
+  // gradient (ForceEvaluation::densityGradients), which the copy-in reads.
+  Derivatives<D> gradientSums;
+  LineVector<Vec<D>> densityGradient;
 };
 
 namespace pair_loop {
@@ -338,11 +342,18 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   constexpr int own = Terms::template ownSums<D>, rateUsed = (D <= 2 ? 4 : 5) + own;
   // The fields a particle's record holds follow from what the terms read (terms::Reads): the
   // extra record {mu, 1/rho} only where a term reads either or the rest density (then {mu,
-  // 1/rho, rho0, 0}), and in 3-D each of rho, p/rho^2 and m only where read. (The 2-D record of
-  // 8 keeps every field: its loads are two whole transposes whatever they hold.)
+  // 1/rho, rho0, 0}) or the density gradient (then {mu, 1/rho, its D axes}, padded to 4 or 8),
+  // and in 3-D each of rho, p/rho^2 and m only where read. (The 2-D record of 8 keeps every
+  // field: its loads are two whole transposes whatever they hold.)
   constexpr terms::Reads reads = Terms::reads;
-  constexpr bool extraRecord = reads.viscosity || reads.densityInverse || reads.restDensity;
-  constexpr int recordSize = 8, extraSize = reads.restDensity ? 4 : 2,
+  static_assert(!(reads.restDensity && reads.densityGradient),
+                "the extra record holds the rest density or the density gradient");
+  constexpr bool extraRecord =
+      reads.viscosity || reads.densityInverse || reads.restDensity || reads.densityGradient;
+  constexpr int recordSize = 8,
+                extraSize = reads.densityGradient ? (D <= 2 ? 4 : 8)
+                            : reads.restDensity   ? 4
+                                                  : 2,
                 rateWidth = rateUsed <= 4   ? 4
                             : rateUsed <= 8 ? 8
                                             : 16;
@@ -350,6 +361,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   static_assert(rateUsed <= rateWidth);
   if (reads.restDensity && set.rho0.size() < n)
     throw std::logic_error("pair loop: a term reads the rest density, and the set has none");
+  if (reads.densityGradient && w.densityGradient.size() < n)
+    throw std::logic_error("pair loop: a term reads the density gradient, and the set has none");
   w.rate = grown(w.rateStore, rateWidth * nPadded);
   if (static_cast<int>(w.scratch.size()) < omp_get_max_threads())
     w.scratch.resize(omp_get_max_threads());
@@ -463,7 +476,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         view.h[k] = hMax, view.receives[k] = 0;
         double* e = view.extra + extraSize * k;
         e[0] = 0.0, e[1] = 1.0;
-        if constexpr (extraSize > 2) e[2] = e[3] = 0.0;
+        for (int f = 2; f < extraSize; ++f) e[f] = 0.0;
         if constexpr (D <= 2) {
           double* r = view.record + recordSize * k;
           r[0] = r[1] = 1e100, r[2] = r[3] = 0.0, r[4] = hMax, r[5] = 1.0, r[6] = r[7] = 0.0;
@@ -501,6 +514,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
       const Vec<D>* sv = set.v.data();
       const double *sRho = set.rho.data(), *sM = set.m.data(), *sH = set.h.data(),
                    *sP = set.p.data(), *sMu = set.mu.data(), *sRho0 = set.rho0.data();
+      const Vec<D>* sGradRho = w.densityGradient.data();
       std::array<double*, D> wx, wv;
       for (int a = 0; a < D; ++a) wx[a] = view.x[a].data(), wv[a] = view.v[a].data();
       double *wh = view.h.data(), *wRho = view.rho.data(), *wM = view.m.data(),
@@ -524,6 +538,8 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           double* e = extras + extraSize * k;
           e[0] = f.mu, e[1] = rhoInv;
           if constexpr (reads.restDensity) e[2] = f.rho0, e[3] = 0.0;
+          if constexpr (reads.densityGradient)
+            for (int a = 0; a < extraSize - 2; ++a) e[2 + a] = a < D ? sGradRho[s][a] : 0.0;
         }
         if (rates) {
           double* rate = rates + rateWidth * k;
@@ -624,6 +640,9 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         const double* ei = extra + extraSize * i;
         const double mui = extraRecord ? ei[0] : 0.0, rhoInvi = extraRecord ? ei[1] : 0.0;
         const double rho0i = reads.restDensity ? ei[2] : 0.0;
+        double gradRhoi[3] = {};
+        if constexpr (reads.densityGradient)
+          for (int a = 0; a < D; ++a) gradRhoi[a] = ei[2 + a];
         Vd accRho{}, accH{}, accX{}, accY{}, accZ{};  // d rho/dt, dh/dt sum, dv/dt per axis
         Vd accOwn[own > 0 ? own : 1] = {};            // the own sums
 
@@ -717,10 +736,11 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
             if constexpr (reads.pressure) prj = gather(prs);
             if constexpr (reads.mass) mj = gather(ms);
           }
-          Vd muj{}, rhoInvj{}, rho0j{};
+          Vd muj{}, rhoInvj{}, rho0j{}, gradRhoj[3] = {};
           if constexpr (extraRecord) {
-            constexpr std::size_t scale = extraSize * sizeof(double) / 16;  // 1 or 2
-            static_assert(scale * 16 == extraSize * sizeof(double) && (scale == 1 || scale == 2));
+            constexpr std::size_t scale = extraSize * sizeof(double) / 16;  // 1, 2 or 4
+            static_assert(scale * 16 == extraSize * sizeof(double) &&
+                          (scale == 1 || scale == 2 || scale == 4));
             const Vd t0 = load2(at(extra, scale, 0), at(extra, scale, 2)),
                      t1 = load2(at(extra, scale, 1), at(extra, scale, 3));
             muj = __builtin_shufflevector(t0, t1, 0, 4, 2, 6);
@@ -729,6 +749,17 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
               const Vd t2 = load2(at(extra, scale, 0) + 2, at(extra, scale, 2) + 2),
                        t3 = load2(at(extra, scale, 1) + 2, at(extra, scale, 3) + 2);
               rho0j = __builtin_shufflevector(t2, t3, 0, 4, 2, 6);
+            }
+            if constexpr (reads.densityGradient) {
+              const Vd t2 = load2(at(extra, scale, 0) + 2, at(extra, scale, 2) + 2),
+                       t3 = load2(at(extra, scale, 1) + 2, at(extra, scale, 3) + 2);
+              gradRhoj[0] = __builtin_shufflevector(t2, t3, 0, 4, 2, 6);
+              gradRhoj[1] = __builtin_shufflevector(t2, t3, 1, 5, 3, 7);
+              if constexpr (D > 2) {
+                const Vd t4 = load2(at(extra, scale, 0) + 4, at(extra, scale, 2) + 4),
+                         t5 = load2(at(extra, scale, 1) + 4, at(extra, scale, 3) + 4);
+                gradRhoj[2] = __builtin_shufflevector(t4, t5, 0, 4, 2, 6);
+              }
             }
           }
           // r_ij, v_ij by component.
@@ -749,23 +780,24 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           const Vd r = inv.r, hInv = 2.0 * inv.a;  // 1 / h_ij
           const Vd gradW = Kernel::template gradOverR<D>(r, inv.rInv, hInv);
           const Vd F = Skinned ? (inside ? gradW : Vd{}) : gradW;  // grad_i W_ij = F r_ij
-          const terms::PairValues<double, Vd> pair{{mi, rhoi, rhoInvi, pri, mui, rho0i},
-                                                   {mj, rhoj, rhoInvj, prj, muj, rho0j},
-                                                   rx,
-                                                   ry,
-                                                   rz,
-                                                   vx,
-                                                   vy,
-                                                   vz,
-                                                   r2c,
-                                                   r,
-                                                   hInv,
-                                                   vr,
-                                                   hSum,
-                                                   hSum2,
-                                                   F,
-                                                   inv.b,
-                                                   inv.c};
+          const terms::PairValues<double, Vd> pair{
+              {mi, rhoi, rhoInvi, pri, mui, rho0i, {gradRhoi[0], gradRhoi[1], gradRhoi[2]}},
+              {mj, rhoj, rhoInvj, prj, muj, rho0j, {gradRhoj[0], gradRhoj[1], gradRhoj[2]}},
+              rx,
+              ry,
+              rz,
+              vx,
+              vy,
+              vz,
+              r2c,
+              r,
+              hInv,
+              vr,
+              hSum,
+              hSum2,
+              F,
+              inv.b,
+              inv.c};
           typename Terms::template Shares<D, Vd> si, sj;
           pairTerms.template pair<D, Kernel>(pair, si, sj);
           constexpr auto writes = Terms::writes;

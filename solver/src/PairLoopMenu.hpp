@@ -8,6 +8,7 @@
 
 #include "PairLoop.hpp"
 #include "sph/terms/Menu.hpp"
+#include "sph/terms/RenormalisedDensityGradient.hpp"
 
 namespace sph::pair_loop {
 
@@ -31,6 +32,11 @@ constexpr std::array<Loop<D>, sizeof...(Mask)> menuOf(std::integer_sequence<unsi
 // The loop of `kind` and menu entry `index` (below terms::menuSize).
 template <int D>
 Loop<D> menuLoop(KernelKind kind, unsigned index);
+// The loop of `kind` that sums the renormalised density gradient alone (the pass before the
+// rates of Antuono et al.'s density diffusion).
+using GradientTerms = terms::TermSet<terms::RenormalisedDensityGradient>;
+template <int D>
+Loop<D> densityGradientLoop(KernelKind kind);
 
 #ifdef SPH_PAIR_LOOP_MENU_DEFINITION
 template <int D>
@@ -41,10 +47,23 @@ Loop<D> menuLoop(KernelKind kind, unsigned index) {
     return menu.at(index);
   });
 }
+template <int D>
+Loop<D> densityGradientLoop(KernelKind kind) {
+  return withKernel(kind, [&](auto k) -> Loop<D> {
+    return
+        [](const terms::TermParameters& parameters, const InteractionSet<D>& set, const Vec<D>& g,
+           NeighbourLists lists, typename ForceEvaluation<D>::Workspace& w, Derivatives<D>& out) {
+          pairLoop<decltype(k), GradientTerms, D>(GradientTerms(parameters), set, g, lists, w, out);
+        };
+  });
+}
 #else
 extern template Loop<1> menuLoop<1>(KernelKind, unsigned);
 extern template Loop<2> menuLoop<2>(KernelKind, unsigned);
 extern template Loop<3> menuLoop<3>(KernelKind, unsigned);
+extern template Loop<1> densityGradientLoop<1>(KernelKind);
+extern template Loop<2> densityGradientLoop<2>(KernelKind);
+extern template Loop<3> densityGradientLoop<3>(KernelKind);
 #endif
 
 }  // namespace sph::pair_loop

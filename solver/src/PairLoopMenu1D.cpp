@@ -6,4 +6,5 @@
 
 namespace sph::pair_loop {
 template Loop<1> menuLoop<1>(KernelKind, unsigned);
-}
+template Loop<1> densityGradientLoop<1>(KernelKind);
+}  // namespace sph::pair_loop

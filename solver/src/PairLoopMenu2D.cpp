@@ -6,4 +6,5 @@
 
 namespace sph::pair_loop {
 template Loop<2> menuLoop<2>(KernelKind, unsigned);
-}
+template Loop<2> densityGradientLoop<2>(KernelKind);
+}  // namespace sph::pair_loop

@@ -6,4 +6,5 @@
 
 namespace sph::pair_loop {
 template Loop<3> menuLoop<3>(KernelKind, unsigned);
-}
+template Loop<3> densityGradientLoop<3>(KernelKind);
+}  // namespace sph::pair_loop

@@ -291,17 +291,20 @@ void readDensityDiffusion(SceneTable& physics, Scene& s) {
     chosen = DensityDiffusion::molteniColagrossi;
   else if (form == "fourtakas")
     chosen = DensityDiffusion::fourtakas;
+  else if (form == "antuono")
+    chosen = DensityDiffusion::antuono;
   else
-    physics.fail("density_diffusion_form",
-                 "unknown form '" + form + "' (expected molteni_colagrossi or fourtakas)");
+    physics.fail("density_diffusion_form", "unknown form '" + form +
+                                               "' (expected molteni_colagrossi, fourtakas or "
+                                               "antuono)");
   s.terms.densityDiffusion = s.diffusionDelta > 0.0 ? chosen : DensityDiffusion::none;
   if (s.terms.densityDiffusion == DensityDiffusion::none) return;
   const Phase& first = s.phases[0];
   if (s.phases.size() > 1) {
-    if (chosen == DensityDiffusion::molteniColagrossi)
+    if (chosen != DensityDiffusion::fourtakas)
       physics.fail("density_diffusion",
-                   "\"molteni_colagrossi\" diffuses the density jump at a phase interface; the "
-                   "scene has " +
+                   "\"" + form +
+                       "\" diffuses the density jump at a phase interface; the scene has " +
                        std::to_string(s.phases.size()) +
                        " phases: density_diffusion_form = \"fourtakas\" diffuses within each");
     for (const Phase& p : s.phases)

@@ -86,6 +86,11 @@ void readWalls(SceneTable walls, std::vector<SceneTable> obstacles, SceneTable d
                              SceneTable::fmt(s.hOverDx) + ") to 64, got " + std::to_string(layers));
   s.wallLayers = static_cast<int>(layers);
   const bool particles = s.wallModel == WallModel::wall_particles;
+  if (particles && s.terms.densityDiffusion == DensityDiffusion::antuono)
+    walls.fail("model",
+               "density_diffusion_form = \"antuono\" takes a halo entry's density gradient from "
+               "the fluid particle it mirrors, and wall particles mirror none: set [walls] model "
+               "= \"mirror_ghosts\" or another form");
   s.tensileWalls = walls.boolean("tensile", !particles);
   if (particles && s.tensileWalls)
     walls.fail("tensile",
@@ -113,7 +118,14 @@ void readWalls(SceneTable walls, std::vector<SceneTable> obstacles, SceneTable d
             .fail(std::string(axisName[a]) + (side == 0 ? "_lower" : "_upper"),
                   "wall particles stand still: a wall velocity along the face's normal needs "
                   "[walls] model = \"mirror_ghosts\"");
-  for (auto& t : obstacles) readObstacle(t, s);
+  for (auto& t : obstacles) {
+    if (s.terms.densityDiffusion == DensityDiffusion::antuono)
+      t.fail("lower",
+             "an obstacle is made of wall particles, and density_diffusion_form = \"antuono\" "
+             "takes a halo entry's density gradient from the fluid particle it mirrors: choose "
+             "another form");
+    readObstacle(t, s);
+  }
 }
 
 }  // namespace sph

@@ -289,7 +289,8 @@ void Simulation<D>::buildSet(const SetFluid<D>& fluid, double reach, HaloMembers
   // particles)
   if (scene_.hydrostaticGhosts &&
       (scene_.terms.densityDiffusion == DensityDiffusion::fourtakas ||
-       scene_.terms.densityDiffusion == DensityDiffusion::fourtakasPhases))
+       scene_.terms.densityDiffusion == DensityDiffusion::fourtakasPhases ||
+       scene_.terms.densityDiffusion == DensityDiffusion::antuono))
     ghostDensitiesFromPressure(scene_.phases, set);
 }
 

@@ -13,7 +13,11 @@
 // psi_ij = 2 (rho_j - rho_i) r_ji / (r_ij^2 + eta^2), and Fourtakas et al.'s (2019) form with
 // rho_j - rho_i less the hydrostatic difference -rho0^2 g . r_ij / (K S), S = sum_k x_j^k
 // x_i^(gamma-1-k), x = rho/rho0 (terms/DensityDiffusionFourtakas.hpp; S here by powers, there by
-// Horner). And particle shifting's pair sums (terms/ConcentrationGradient.hpp, Lind et al. 2012):
+// Horner); Antuono et al.'s (2010) form with 2 (rho_j - rho_i) r_ji / |r_ij|^2 less
+// (G_i + G_j), G the renormalised density gradient L_i sum_j (rho_j - rho_i) grad_i W_ij V_j,
+// L_i = [sum_j r_ji (x) grad_i W_ij V_j]^-1 (the plain sum where L_i^-1 is near singular), a halo
+// entry's its source's (terms/DensityDiffusionAntuono.hpp). And particle shifting's pair sums
+// (terms/ConcentrationGradient.hpp, Lind et al. 2012):
 //   grad C_i = sum_j V_j (1 + 0.2 (W_ij / W(dx, h_ij))^4) grad_i W_ij,  g_i = sum_j V_j grad_i
 //   W_ij, div r_i = -sum_j V_j r_ij . grad_i W_ij,  V_j = m_j / rho_j.
 #include <gtest/gtest.h>
@@ -33,6 +37,7 @@
 #include "sph/terms/DensityDiffusionFourtakas.hpp"
 #include "sph/terms/MorrisViscosity.hpp"
 #include "sph/terms/PressureGradient.hpp"
+#include "sph/terms/RenormalisedDensityGradient.hpp"
 #include "sph/terms/TermSet.hpp"
 
 namespace {
@@ -47,7 +52,8 @@ const sph::Phase phases[2] = {{"water", 1000.0, 20.0, 8.9e-4, 0.0, 7.0},
 
 // n particles (300 unless given) in a unit-ish box with random velocity, density (+-3 %),
 // h (+-20 %) and phase.
-// The last 50 entries play the halo: they are neighbours but receive no rates.
+// The last 50 entries play the halo: they are neighbours but receive no rates; each stands for
+// one of the first 50 (its source).
 template <int D>
 sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
   std::mt19937_64 rng(seed);
@@ -64,7 +70,7 @@ sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
     s.m.push_back(rho * std::pow(dx, D) * (0.9 + 0.2 * u(rng)));
     s.h.push_back(1.33 * dx * (0.8 + 0.4 * u(rng)));
     s.mu.push_back(ph.mu), s.rho0.push_back(ph.rho0);
-    s.source.push_back(i);
+    s.source.push_back(i < n - 50 ? i : i - (n - 50));
   }
   s.nFluid = n - 50;
   return s;
@@ -96,11 +102,12 @@ sph::terms::TermParameters parametersFor(int n = 300) {
           .spacing = std::pow(1.0 / n, 1.0 / D)};
 }
 // Every subset of the three optional terms times each density diffusion form (none, Molteni &
-// Colagrossi, Fourtakas et al., Fourtakas et al. within each phase), then all three with
+// Colagrossi, Fourtakas et al., Fourtakas et al. within each phase,
+// Antuono et al.), then all three with
 // shifting's pair sums and each form: the menu of terms/Menu.hpp.
-constexpr int menuSize = 36;
+constexpr int menuSize = 45;
 sph::TermSwitches switchesOf(int combo) {
-  if (combo >= 32) return {true, true, true, static_cast<sph::DensityDiffusion>(combo - 32), true};
+  if (combo >= 40) return {true, true, true, static_cast<sph::DensityDiffusion>(combo - 40), true};
   return {(combo & 1) != 0, (combo & 2) != 0, (combo & 4) != 0,
           static_cast<sph::DensityDiffusion>(combo / 8)};
 }
@@ -126,11 +133,41 @@ double hydrostaticDifference(const sph::InteractionSet<D>& s, std::size_t i, std
   return -rho0 * rho0 * gr / (K * S);
 }
 
+// Antuono et al.'s renormalised density gradient of every entry of the set: the fluid's from
+// all its neighbours, a halo entry's its source's.
+template <int D>
+std::vector<sph::Vec<D>> densityGradients(const sph::InteractionSet<D>& s, KernelKind kind) {
+  std::vector<sph::Vec<D>> G(s.size());
+  for (std::size_t i = 0; i < s.nFluid; ++i) {
+    Eigen::Matrix<double, D, D> M = Eigen::Matrix<double, D, D>::Zero();
+    sph::Vec<D> g = sph::Vec<D>::Zero();
+    for (std::size_t j = 0; j < s.size(); ++j) {
+      const sph::Vec<D> rij = s.x[i] - s.x[j];
+      const double r = rij.norm(), hij = 0.5 * (s.h[i] + s.h[j]);
+      if (j == i || r >= 2.0 * hij) continue;
+      const sph::Vec<D> gradW = sph::kernelSlope<D>(kind, r, hij) / r * rij;
+      const double V = s.m[j] / s.rho[j];
+      M += V * (-rij) * gradW.transpose();
+      g += (s.rho[j] - s.rho[i]) * V * gradW;
+    }
+    const double mean = M.trace() / D;
+    const bool renormalised =
+        mean > 0.0 && M.determinant() > sph::terms::RenormalisedDensityGradient::leastIsotropy *
+                                            std::pow(mean, D);
+    G[i] = renormalised ? sph::Vec<D>(M.inverse() * g) : g;
+  }
+  for (std::size_t k = s.nFluid; k < s.size(); ++k) G[k] = G[s.source[k]];
+  return G;
+}
+
 template <int D>
 Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::TermSwitches t,
                        const sph::terms::TermParameters& par) {
   const double beta = par.beta;
   const std::size_t nf = s.nFluid;
+  const bool antuono = t.densityDiffusion == sph::DensityDiffusion::antuono;
+  const std::vector<sph::Vec<D>> G =
+      antuono ? densityGradients<D>(s, kind) : std::vector<sph::Vec<D>>();
   Reference<D> ref;
   ref.rates.resize(nf);
   ref.scaleV.assign(nf, 0.0), ref.scaleRho.assign(nf, 0.0), ref.scaleH.assign(nf, 0.0);
@@ -173,7 +210,9 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
                 ? hydrostaticDifference<D>(s, i, j, par, par.rho0, par.bulkModulus)
             : byPhase ? hydrostaticDifference<D>(s, i, j, par, s.rho0[i], Ki)
                       : 0.0;
-        const sph::Vec<D> psi = 2.0 * (s.rho[j] - s.rho[i] - hydrostatic) * (-rij) / (r * r + eta2);
+        sph::Vec<D> psi = 2.0 * (s.rho[j] - s.rho[i] - hydrostatic) * (-rij) / (r * r + eta2);
+        // (-(G_i + G_j) . grad W with the same r^2 / (r^2 + eta^2) as the first part)
+        if (antuono) psi -= r * r / (r * r + eta2) * (G[i] + G[j]);
         const double c =
             par.diffusionDelta * hij * par.soundSpeed * psi.dot(gradW) * s.m[j] / s.rho[j];
         drho += c;
@@ -266,7 +305,7 @@ void allCombinations(unsigned seed) {
     }
     results.check("max |code - O(N^2) reference| / sum|pair terms|, " +
                       std::string(sph::name(kind)) + ", D=" + std::to_string(D) +
-                      ", all 36 term combinations",
+                      ", all 45 term combinations",
                   worst, "<=", tolerance, "summation round-off bound (n u sum|x_k|, Higham 2002)");
   }
 }
@@ -330,7 +369,7 @@ void keptLists(unsigned seed) {
     EXPECT_LE(worst, tolerance) << what;
     EXPECT_GE(worstFar, 1e-3) << what;
     results.check("kept neighbour lists, moved within the skin: max error / sum|pair terms|, " +
-                      what + ", all 36 term combinations",
+                      what + ", all 45 term combinations",
                   worst, "<=", tolerance, "summation round-off bound, as the full build");
   }
 }
@@ -371,10 +410,11 @@ TEST(ForceEvaluation, KeptNeighbourListsMatchReference3D) {
 // work counted in the last one after that, so each count evaluates twice; 5 threads leave some
 // without an even band.
 class ThreadCount : public ::testing::TestWithParam<int> {};
-TEST_P(ThreadCount, DoesNotChangeBits) {
-  const auto set = randomSet<2>(13, GetParam());
-  const sph::TermSwitches all{true, true, true, sph::DensityDiffusion::fourtakas, true};
-  const auto parameters = parametersFor<2>(GetParam());
+// Antuono et al.'s diffusion, with its pass for the density gradient, too.
+void threadCountKeepsBits(int n, sph::DensityDiffusion form) {
+  const auto set = randomSet<2>(13, n);
+  const sph::TermSwitches all{true, true, true, form, true};
+  const auto parameters = parametersFor<2>(n);
   const int saved = omp_get_max_threads();
   omp_set_num_threads(1);
   sph::Derivatives<2> one;
@@ -406,6 +446,12 @@ TEST_P(ThreadCount, DoesNotChangeBits) {
     }
   }
   omp_set_num_threads(saved);
+}
+TEST_P(ThreadCount, DoesNotChangeBits) {
+  threadCountKeepsBits(GetParam(), sph::DensityDiffusion::fourtakas);
+}
+TEST_P(ThreadCount, DoesNotChangeBitsWithAntuonoDiffusion) {
+  threadCountKeepsBits(GetParam(), sph::DensityDiffusion::antuono);
 }
 INSTANTIATE_TEST_SUITE_P(ForceEvaluation, ThreadCount, ::testing::Values(300, 3000));
 

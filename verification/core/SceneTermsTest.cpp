@@ -104,10 +104,37 @@ TEST(SceneTerms, UnknownDensityDiffusionFormIsRefusedWithItsKey) {
   const std::string dir = freshOutputDirectory();
   const ProgramResult r = runSph(
       "check '" +
-      withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"antuono\"", dir) + "'");
+      withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"delta_les\"", dir) + "'");
   EXPECT_EQ(r.exitCode, 2) << r.output;
   EXPECT_NE(r.output.find("'physics.density_diffusion_form'"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("antuono"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("delta_les"), std::string::npos) << r.output;
+}
+
+// Antuono et al.'s (2010) form: named in the run file, and the tank runs stable.
+TEST(SceneTerms, AntuonoFormRunsWhenTheSceneAsksForIt) {
+  const std::string dir = freshOutputDirectory();
+  const std::string antuono =
+      withPhysics("density_diffusion = 0.1\ndensity_diffusion_form = \"antuono\"", dir);
+  ASSERT_EQ(runSph("run '" + antuono + "' --quiet --out '" + dir + "/a'").exitCode, 0);
+  const std::string a = dir + "/a/small_tank.h5";
+  const auto terms = stringAttribute(a, "/", "terms");
+  ASSERT_TRUE(terms.has_value());
+  EXPECT_NE(terms->find("density_diffusion_antuono"), std::string::npos) << *terms;
+  EXPECT_EQ(stringAttribute(a, "/", "status"), "stable");
+}
+
+// With two phases the form would diffuse the density jump at their interface.
+TEST(SceneTerms, AntuonoFormIsRefusedWithTwoPhases) {
+  const std::string dir = freshOutputDirectory();
+  std::string text = readText(twoPhases(dir, 20.0));
+  const std::string form = "density_diffusion_form = \"fourtakas\"";
+  ASSERT_NE(text.find(form), std::string::npos);
+  text.replace(text.find(form), form.size(), "density_diffusion_form = \"antuono\"");
+  writeText(dir + "/antuono.toml", text);
+  const ProgramResult r = runSph("check '" + dir + "/antuono.toml'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("'physics.density_diffusion'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("\"antuono\" diffuses the density jump"), std::string::npos) << r.output;
 }
 
 TEST(SceneTerms, FourtakasFormNeedsAWholeGamma) {

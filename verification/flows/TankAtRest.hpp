@@ -52,6 +52,11 @@ inline const Model fourtakasFixedH{"paper + Fourtakas delta 0.1, fixed h",
                                    fourtakasPhysics("0.1", false)};
 inline const Model fourtakas02{"paper + Fourtakas delta 0.2", fourtakasPhysics("0.2")};
 inline const Model fourtakas005{"paper + Fourtakas delta 0.05", fourtakasPhysics("0.05")};
+// Antuono et al.'s (2010) form instead: the renormalised density gradient subtracted.
+inline const Model antuono{"paper + Antuono delta 0.1",
+                           paperPhysics() +
+                               "density_diffusion = 0.1\n"
+                               "density_diffusion_form = \"antuono\"\n"};
 
 // The same with position Verlet (integrators/PositionVerlet.hpp) for the time step.
 inline const Model fourtakasVerlet{"paper + Fourtakas delta 0.1, position Verlet",

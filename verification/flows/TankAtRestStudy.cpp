@@ -2,8 +2,9 @@
 // aspects and resolutions (validation/stability/tank_at_rest_study.py runs the matrix):
 //   tank_at_rest_study MODEL KERNEL ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]
 // MODEL paper | mc | fourtakas | fourtakas_fixed_h | fourtakas_02 | fourtakas_005 | fourtakas_pv |
-// fourtakas_vv | lind | delta_plus | fourtakas_lind | fourtakas_delta_plus (fourtakas with a fixed
-// h, with delta 0.2 and 0.05, with position and velocity Verlet; the last four with shifting),
+// fourtakas_vv | antuono | lind | delta_plus | fourtakas_lind | fourtakas_delta_plus (fourtakas
+// with a fixed h, with delta 0.2 and 0.05, with position and velocity Verlet; Antuono et al.'s
+// form; the last four with shifting),
 // KERNEL quadratic | cubic_spline | wendland_c2, CELLS = H/dx, HORIZON t sqrt(g/H) (100),
 // H_OVER_DX the kernel's h/dx (- or TankAtRest.hpp's for the kernel), CFL the acoustic one (0.25),
 // DIMENSION 2 or 3 (3: a tank ASPECT x 1 x 1 H). With TANK_AT_REST_SERIES=FILE set, the 100 samples
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
   if (argc < 5 || argc > 9) {
     std::fprintf(stderr,
                  "usage: tank_at_rest_study paper|mc|fourtakas|fourtakas_fixed_h|fourtakas_02|"
-                 "fourtakas_005|fourtakas_pv|fourtakas_vv|lind|delta_plus|fourtakas_lind|"
+                 "fourtakas_005|fourtakas_pv|fourtakas_vv|antuono|lind|delta_plus|fourtakas_lind|"
                  "fourtakas_delta_plus quadratic|cubic_spline|wendland_c2 "
                  "ASPECT CELLS [HORIZON [H_OVER_DX [CFL [DIMENSION]]]]\n");
     return 2;
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
                    : model == "fourtakas_005"        ? &fourtakas005
                    : model == "fourtakas_pv"         ? &fourtakasVerlet
                    : model == "fourtakas_vv"         ? &fourtakasVelocityVerlet
+                   : model == "antuono"              ? &antuono
                    : model == "lind"                 ? &paperLind
                    : model == "delta_plus"           ? &paperDeltaPlus
                    : model == "fourtakas_lind"       ? &fourtakasLind

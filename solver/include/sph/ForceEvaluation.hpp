@@ -22,6 +22,7 @@ enum class DensityDiffusion : unsigned {
   molteniColagrossi,  // Molteni & Colagrossi (2009)
   fourtakas,          // Fourtakas et al. (2019): the hydrostatic part subtracted
   fourtakasPhases,    // Fourtakas et al.'s within each of several phases
+  antuono,            // Antuono et al. (2010): the renormalised density gradient subtracted
 };
 // The optional terms, in the order of terms::OptionalTerms, and the slots' choices.
 struct TermSwitches {
@@ -69,6 +70,8 @@ class ForceEvaluation {
   ForceEvaluation(KernelKind kernel, TermSwitches terms, double beta);  // the paper's terms only
 
   // Continuity (eq. 11), pressure gradient (eq. 12) with the enabled viscosities, and dh/dt;
+  // with Antuono et al.'s diffusion, after a pass of its own for every entry's renormalised
+  // density gradient (terms/RenormalisedDensityGradient.hpp; one process's whole set only);
   // `g`, a uniform body acceleration, is added to dv/dt as the rates are written (F/rho in eq.
   // 12; no pass of its own). Each pair is evaluated once and every sum runs in an order that the
   // cell list fixes, so the result does not depend on the number of threads. With `ownSums`
@@ -104,10 +107,11 @@ class ForceEvaluation {
  private:
   using Loop = void (*)(const terms::TermParameters&, const InteractionSet<D>&, const Vec<D>& g,
                         NeighbourLists, Workspace&, Derivatives<D>&);
+  void densityGradients(const InteractionSet<D>& set, NeighbourLists& lists);
   KernelKind kernel_;
   TermSwitches terms_;
   terms::TermParameters parameters_;
-  Loop loop_, ownSumsLoop_;
+  Loop loop_, ownSumsLoop_, gradientLoop_ = nullptr;
   std::shared_ptr<Workspace> work_;
 };
 

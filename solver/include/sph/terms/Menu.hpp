@@ -10,6 +10,7 @@
 #include "sph/terms/BodyForce.hpp"
 #include "sph/terms/ConcentrationGradient.hpp"
 #include "sph/terms/ContinuityEquation.hpp"
+#include "sph/terms/DensityDiffusionAntuono.hpp"
 #include "sph/terms/DensityDiffusionFourtakas.hpp"
 #include "sph/terms/DensityDiffusionFourtakasPhases.hpp"
 #include "sph/terms/DensityDiffusionMolteniColagrossi.hpp"
@@ -30,7 +31,7 @@ using RequiredTerms = TermList<ContinuityEquation, PressureGradient, BodyForce>;
 using OptionalTerms = TermList<ArtificialViscosity, MorrisViscosity, VariableSmoothingLength>;
 // The density diffusion slot: none (0) or the form at 1, 2, ... (TermSwitches::DensityDiffusion).
 using DensityDiffusionForms = TermList<DensityDiffusionMolteniColagrossi, DensityDiffusionFourtakas,
-                                       DensityDiffusionFourtakasPhases>;
+                                       DensityDiffusionFourtakasPhases, DensityDiffusionAntuono>;
 inline constexpr unsigned optionalSubsets = 1u << OptionalTerms::size;
 inline constexpr unsigned ratesEntries = optionalSubsets * (1 + DensityDiffusionForms::size);
 // Particle shifting's pair sums (ConcentrationGradient) join one optional subset only, with each

@@ -24,18 +24,19 @@ namespace sph::terms {
 // One particle of the pair.
 template <class T>
 struct Side {
-  T m;          // mass
-  T rho;        // density
-  T rhoInv;     // 1 / rho
-  T pOverRho2;  // p / rho^2 (Tait, eq. 8)
-  T mu;         // dynamic viscosity
-  T rho0;       // the rest density of its phase (eq. 8), where a term reads it
+  T m;           // mass
+  T rho;         // density
+  T rhoInv;      // 1 / rho
+  T pOverRho2;   // p / rho^2 (Tait, eq. 8)
+  T mu;          // dynamic viscosity
+  T rho0;        // the rest density of its phase (eq. 8), where a term reads it
+  T gradRho[3];  // its renormalised density gradient (zero beyond D), where a term reads it
 };
 
 // A particle's side from its state: the factors computed once per particle and evaluation.
 inline Side<double> sideOf(double m, double rho, double p, double mu, double rho0) {
   const double rhoInv = 1.0 / rho;
-  return {m, rho, rhoInv, p * rhoInv * rhoInv, mu, rho0};
+  return {m, rho, rhoInv, p * rhoInv * rhoInv, mu, rho0, {}};
 }
 
 // The pair (i, j), r_ij = x_i - x_j, v_ij = v_i - v_j, within the kernel's support.
@@ -60,8 +61,9 @@ struct PairValues {
 // of (h_i + h_j)^2 = 4 h_ij^2. (The paper prints eta = 0.01 H^2.)
 inline constexpr double etaSquaredOfHSum2 = 0.0025;
 
-// The most sums of its own a term may have (Writes; 2 D + 1 in 3-D).
-inline constexpr int maxOwnSums = 7;
+// The most sums of its own a term may have (Writes): the renormalised density gradient's
+// D (D + 1) / 2 + D in 3-D.
+inline constexpr int maxOwnSums = 9;
 
 // What one pair adds, before the driver sums it: to i's and to j's d rho/dt, to the sums of
 // eq. (13) (h/D times the sum is dh/dt), and eq. (12)'s pair force per unit of the two masses,
@@ -82,6 +84,9 @@ struct Reads {
   // the particles' fields (Side) beyond their positions, velocities and h
   bool mass = false, density = false, densityInverse = false, pressure = false, viscosity = false,
        restDensity = false;
+  // the renormalised density gradient of each particle (terms/RenormalisedDensityGradient.hpp),
+  // which the force evaluation computes in a pass of its own before the rates
+  bool densityGradient = false;
   // the pair's shared values beyond r_ij, v_ij and the kernel
   bool etaInverse = false, rhoSumInverse = false;
 };

@@ -30,14 +30,16 @@ class TermSet {
 
   // What its terms read; the masses also for eq. (12)'s pair force below, the densities for
   // 1/(rho_i + rho_j).
-  static constexpr Reads reads{true,
-                               (Ts::reads.density || ...) || (Ts::reads.rhoSumInverse || ...),
-                               (Ts::reads.densityInverse || ...),
-                               (Ts::reads.pressure || ...),
-                               (Ts::reads.viscosity || ...),
-                               (Ts::reads.restDensity || ...),
-                               (Ts::reads.etaInverse || ...),
-                               (Ts::reads.rhoSumInverse || ...)};
+  static constexpr Reads reads{
+      .mass = true,
+      .density = (Ts::reads.density || ...) || (Ts::reads.rhoSumInverse || ...),
+      .densityInverse = (Ts::reads.densityInverse || ...),
+      .pressure = (Ts::reads.pressure || ...),
+      .viscosity = (Ts::reads.viscosity || ...),
+      .restDensity = (Ts::reads.restDensity || ...),
+      .densityGradient = (Ts::reads.densityGradient || ...),
+      .etaInverse = (Ts::reads.etaInverse || ...),
+      .rhoSumInverse = (Ts::reads.rhoSumInverse || ...)};
   static constexpr Writes writes{(Ts::writes.density || ...), (Ts::writes.smoothingLength || ...),
                                  (Ts::writes.bracket || ...), (Ts::writes.viscous || ...)};
   // The pair's shared values every set computes (DESIGN.md 1; quadratic kernel): h_ij 1,
