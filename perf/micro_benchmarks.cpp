@@ -47,14 +47,21 @@ BENCHMARK(BM_CellListBuild)
     ->Unit(benchmark::kMicrosecond);
 
 // One term combination alone (quadratic kernel, 1 thread, 2e4 particles): range(0) is the menu
-// entry of sph_bench's table (Workload.hpp: menuEntry).
+// entry of sph_bench's table (Workload.hpp: menuEntry); range(1) 1: with the neighbour lists of a
+// build with the scenes' default skin reused, as most of a run's evaluations are (below), else
+// built at each evaluation. Every entry with lists built; the paper's terms with each density
+// diffusion form (entries 7 + 8 x form: none, Molteni & Colagrossi, Fourtakas et al., theirs
+// within each phase, Antuono et al. with its gradient pass) with lists kept too.
 void BM_Terms(benchmark::State& state) {
   const sph::TermSwitches terms = sph::perf::menuEntry(static_cast<int>(state.range(0)));
   Block2D& b = block(20000);
   sph::ForceEvaluation<2> force(sph::KernelKind::quadratic, terms, sph::perf::termParameters(b));
   omp_set_num_threads(1);
+  const bool keep = state.range(1) != 0;
+  const sph::NeighbourLists build{keep ? 0.1 * 2.0 * b.hMax : 0.0, false}, kept{build.skin, keep};
+  force(b.set, b.out, sph::Vec<2>::Zero(), build);
   for (auto _ : state) {
-    force(b.set, b.out);
+    force(b.set, b.out, sph::Vec<2>::Zero(), kept);
     benchmark::DoNotOptimize(b.out.drhodt.data());
   }
   std::string label;
@@ -63,7 +70,13 @@ void BM_Terms(benchmark::State& state) {
   state.SetLabel(label);
   setCounters(state, b.set.nFluid);
 }
-BENCHMARK(BM_Terms)->DenseRange(0, sph::terms::menuSize - 1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Terms)
+    ->Apply([](benchmark::internal::Benchmark* b) {
+      for (int t = 0; t < static_cast<int>(sph::terms::menuSize); ++t) b->Args({t, 0});
+      for (int form = 0; form <= sph::terms::DensityDiffusionForms::size; ++form)
+        b->Args({7 + 8 * form, 1});
+    })
+    ->Unit(benchmark::kMicrosecond);
 
 // Each kernel with every term (the dam break's menu entry), 1 thread, 2e4 particles.
 void BM_Kernels(benchmark::State& state) {

@@ -7,6 +7,7 @@
 #endif
 #include "sph/ForceEvaluation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -92,7 +93,9 @@ void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>
 // the entries reads it: the fluid's from its pair sums, a halo entry's its source's (a periodic
 // image's is its source's; a hydrostatic mirror ghost's density continues its source's field
 // across the wall, terms/DensityDiffusionAntuono.hpp). The pass builds the neighbour lists where
-// the rates' pass would, which then reuses them.
+// the rates' pass would, which then reuses them: lists asked for without a skin get one of a
+// millionth of the support, so that they are kept for that one reuse (the pairs beyond the
+// support are masked out in both passes, NeighbourLists).
 template <int D>
 void ForceEvaluation<D>::densityGradients(const InteractionSet<D>& set, NeighbourLists& lists) {
   if (!set.ownedParticle.empty())
@@ -101,20 +104,32 @@ void ForceEvaluation<D>::densityGradients(const InteractionSet<D>& set, Neighbou
         "neighbours, and a set of one process of several has copies of other processes' "
         "entries without them");
   Workspace& w = *work_;
+  if (!lists.reuse && !(lists.skin > 0)) {
+    double hMax = 0.0;
+    for (std::size_t k = 0; k < set.size(); ++k) hMax = std::max(hMax, set.h[k]);
+    lists.skin = 1e-6 * hMax;
+  }
   gradientLoop_(parameters_, set, Vec<D>::Zero(), lists, w, w.gradientSums);
-  w.densityGradient.resize(set.size());
-  const double* sums = w.gradientSums.sums.data();
-  const int width = w.gradientSums.sumsWidth;
-  for (std::size_t i = 0; i < set.nFluid; ++i)
-    w.densityGradient[i] = terms::RenormalisedDensityGradient::gradient<D>(sums + width * i);
-  for (std::size_t k = set.nFluid; k < set.size(); ++k) {
-    const int source = set.source[k];
-    if (source < 0 || static_cast<std::size_t>(source) >= set.nFluid)
+  for (std::size_t k = set.nFluid; k < set.size(); ++k)
+    if (set.source[k] < 0 || static_cast<std::size_t>(set.source[k]) >= set.nFluid)
       throw std::invalid_argument(
           "ForceEvaluation: Antuono et al.'s density diffusion takes a halo entry's density "
           "gradient from the fluid particle it stands for, and entry " +
           std::to_string(k) + " stands for none (a wall particle)");
-    w.densityGradient[k] = w.densityGradient[source];
+  w.densityGradient.resize(set.size());
+  const double* sums = w.gradientSums.sums.data();
+  const int width = w.gradientSums.sumsWidth;
+  const std::int64_t nFluid = static_cast<std::int64_t>(set.nFluid);
+  const std::int64_t n = static_cast<std::int64_t>(set.size());
+  Vec<D>* G = w.densityGradient.data();
+  const int* source = set.source.data();
+#pragma omp parallel
+  {
+#pragma omp for schedule(static)
+    for (std::int64_t i = 0; i < nFluid; ++i)
+      G[i] = terms::RenormalisedDensityGradient::gradient<D>(sums + width * i);
+#pragma omp for schedule(static)
+    for (std::int64_t k = nFluid; k < n; ++k) G[k] = G[source[k]];
   }
   if (lists.skin > 0) lists.reuse = true;
 }

@@ -338,8 +338,14 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
   const std::size_t nPadded = n + lanes;
   // A rate record: d rho/dt, the dh/dt sum, dv/dt by axis (four doubles in 1-D and 2-D, with
   // v_y = 0 in 1-D; five in 3-D), then the term set's own sums (TermSet::ownSums), if any; its
-  // width a power of two, so that 16 j times it over 16 is an addressing mode's scale.
-  constexpr int own = Terms::template ownSums<D>, rateUsed = (D <= 2 ? 4 : 5) + own;
+  // width a power of two, so that 16 j times it over 16 is an addressing mode's scale. A set
+  // whose terms write no rate (the density gradient's pass: only sums of their own, and no
+  // pressure bracket, so that the pair force is zero) has the own sums alone.
+  constexpr auto writes = Terms::writes;
+  constexpr bool writesRates =
+      writes.density || writes.smoothingLength || writes.bracket || writes.viscous;
+  constexpr int ratesUsed = writesRates ? (D <= 2 ? 4 : 5) : 0;
+  constexpr int own = Terms::template ownSums<D>, rateUsed = ratesUsed + own;
   // The fields a particle's record holds follow from what the terms read (terms::Reads): the
   // extra record {mu, 1/rho} only where a term reads either or the rest density (then {mu,
   // 1/rho, rho0, 0}) or the density gradient (then {mu, 1/rho, its D axes}, padded to 4 or 8),
@@ -357,7 +363,7 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
                 rateWidth = rateUsed <= 4   ? 4
                             : rateUsed <= 8 ? 8
                                             : 16;
-  constexpr int ownAt = D <= 2 ? 4 : 5;  // where the own sums start in a rate record
+  constexpr int ownAt = ratesUsed;  // where the own sums start in a rate record
   static_assert(rateUsed <= rateWidth);
   if (reads.restDensity && set.rho0.size() < n)
     throw std::logic_error("pair loop: a term reads the rest density, and the set has none");
@@ -800,7 +806,6 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
               inv.c};
           typename Terms::template Shares<D, Vd> si, sj;
           pairTerms.template pair<D, Kernel>(pair, si, sj);
-          constexpr auto writes = Terms::writes;
           if constexpr (writes.density) accRho += si.rho;
           if constexpr (writes.smoothingLength) accH += si.h;
           accX += si.v[0];
@@ -812,12 +817,14 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           Vd jX = sj.v[0], jY = D > 1 ? sj.v[1] : Vd{};
           const int live = std::min(lanes, count - k);
           if constexpr (D <= 2) {
-            transpose(jRho, jH, jX, jY);  // now one record {rho, h, x, y} per lane
-            const Vd lane[4] = {jRho, jH, jX, jY};
-            for (int l = 0; l < live; ++l) {
-              double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
-              const Vd updated = load(rate) + lane[l];
-              __builtin_memcpy(rate, &updated, sizeof updated);
+            if constexpr (writesRates) {
+              transpose(jRho, jH, jX, jY);  // now one record {rho, h, x, y} per lane
+              const Vd lane[4] = {jRho, jH, jX, jY};
+              for (int l = 0; l < live; ++l) {
+                double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
+                const Vd updated = load(rate) + lane[l];
+                __builtin_memcpy(rate, &updated, sizeof updated);
+              }
             }
             // The own sums after them: four at a time as the rates, the rest lane by lane.
             for (int o = 0; o + lanes <= own; o += lanes) {
@@ -840,18 +847,22 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
             const Vd lane[4] = {jRho, jH, jX, jY};
             for (int l = 0; l < live; ++l) {
               double* rate = at(w.rate, rateWidth * sizeof(double) / 16, l);
-              const Vd updated = load(rate) + lane[l];
-              __builtin_memcpy(rate, &updated, sizeof updated);
-              rate[4] += jZ[l];
+              if constexpr (writesRates) {
+                const Vd updated = load(rate) + lane[l];
+                __builtin_memcpy(rate, &updated, sizeof updated);
+                rate[4] += jZ[l];
+              }
               for (int o = 0; o < own; ++o) rate[ownAt + o] += sj.own[o][l];
             }
           }
         }
         double* rate = w.rate + rateWidth * i;
         if constexpr (D <= 2) {  // the lanes summed in a fixed order, four fields at once
-          transpose(accRho, accH, accX, accY);
-          const Vd updated = load(rate) + (((accRho + accH) + accX) + accY);
-          __builtin_memcpy(rate, &updated, sizeof updated);
+          if constexpr (writesRates) {
+            transpose(accRho, accH, accX, accY);
+            const Vd updated = load(rate) + (((accRho + accH) + accX) + accY);
+            __builtin_memcpy(rate, &updated, sizeof updated);
+          }
           for (int o = 0; o + lanes <= own; o += lanes) {
             Vd a = accOwn[o], b = accOwn[o + 1], c = accOwn[o + 2], d = accOwn[o + 3];
             transpose(a, b, c, d);
@@ -860,8 +871,10 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
           }
           for (int o = own / lanes * lanes; o < own; ++o) rate[ownAt + o] += sum(accOwn[o]);
         } else {
-          rate[0] += sum(accRho), rate[1] += sum(accH), rate[2] += sum(accX);
-          rate[3] += sum(accY), rate[4] += sum(accZ);
+          if constexpr (writesRates) {
+            rate[0] += sum(accRho), rate[1] += sum(accH), rate[2] += sum(accX);
+            rate[3] += sum(accY), rate[4] += sum(accZ);
+          }
           for (int o = 0; o < own; ++o) rate[ownAt + o] += sum(accOwn[o]);
         }
       }
@@ -912,11 +925,13 @@ void pairLoop(const Terms terms, const InteractionSet<D>& set, const Vec<D>& g,
         int dst = sorted[k];
         if (dst >= nFluid || (ownedParticle && (dst = ownedParticle[dst]) < 0)) return;
         const double* rate = rates + rateWidth * k;
-        terms::ParticleRates<Vec<D>> r{rate[0], rate[1], 0.0, Vec<D>()};
-        for (int a = 0; a < D; ++a) r.dvdt[a] = rate[2 + a];
-        const double h = D <= 2 ? records[recordSize * k + 4] : hs[k];
-        pairTerms.template finish<D>(r, {h, gravity});
-        dRho[dst] = r.drhodt, dH[dst] = r.dhdt, dV[dst] = r.dvdt;
+        if constexpr (writesRates) {
+          terms::ParticleRates<Vec<D>> r{rate[0], rate[1], 0.0, Vec<D>()};
+          for (int a = 0; a < D; ++a) r.dvdt[a] = rate[2 + a];
+          const double h = D <= 2 ? records[recordSize * k + 4] : hs[k];
+          pairTerms.template finish<D>(r, {h, gravity});
+          dRho[dst] = r.drhodt, dH[dst] = r.dhdt, dV[dst] = r.dvdt;
+        }
         for (int o = 0; o < own; ++o) sums[own * dst + o] = rate[ownAt + o];
       });
     }

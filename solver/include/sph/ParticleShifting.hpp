@@ -51,7 +51,7 @@
 // Cost (perf record, the dam break at dx 0.005 with Fourtakas diffusion and Lind shifting to
 // t = 0.3 s, one thread): the trial evaluation with the sums 46 % of the time, the other, without,
 // 28 %; the marks near the surface 2 % and the per-particle rest 1 %. On its own (micro_benchmarks
-// BM_Terms/26 against /23, 2e4 particles, fastest of 15 alternated runs) the loop with the sums
+// BM_Terms/42/0 against /23/0, 2e4 particles, fastest of 15 alternated runs) the loop with the sums
 // takes 1.34 times the loop without; taking W(dx) as a constant instead of the division changed
 // nothing there (2708 against 2707 us): the cost lies in the rest, the five sums and their adds to
 // j's rate record (16 doubles wide with them, 4 without). End to end (perf/remedies_cost.sh, 2

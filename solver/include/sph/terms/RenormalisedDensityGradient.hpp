@@ -17,7 +17,6 @@
 // leastIsotropy), L_i is the identity: the plain SPH gradient (the fallback of the renormalised
 // schemes, e.g. Marrone et al. 2011, Comput. Methods Appl. Mech. Engrg. 200, 1526).
 #include <Eigen/Dense>
-#include <cmath>
 
 #include "sph/terms/PairValues.hpp"
 
@@ -68,7 +67,9 @@ class RenormalisedDensityGradient {
       for (int b = a; b < D; ++b, ++k) M(a, b) = M(b, a) = sums[k];
     const Eigen::Matrix<double, D, 1> g = Eigen::Map<const Eigen::Matrix<double, D, 1>>(sums + k);
     const double mean = M.trace() / D;
-    const bool renormalised = mean > 0.0 && M.determinant() > leastIsotropy * std::pow(mean, D);
+    double meanToD = mean;
+    for (int a = 1; a < D; ++a) meanToD *= mean;
+    const bool renormalised = mean > 0.0 && M.determinant() > leastIsotropy * meanToD;
     // The identity blended in for a singular M, not a branch around the inverse: with
     // -fno-trapping-math the compiler may compute both sides of a branch (it inverts several
     // particles' M at once, singular ones too), and 1 / 0 would raise where exceptions trap.
