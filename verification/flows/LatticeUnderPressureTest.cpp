@@ -203,6 +203,14 @@ TEST(LatticeUnderPressure, StabilityMapOverHOverDx) {
     map(std::integral_constant<int, 2>{}, kind, 32);
     map(std::integral_constant<int, 3>{}, kind, 8);
   }
+  // The named model's kernel in 2-D, and Wendland C2 where SCENES.md points a 3-D scene, on finer
+  // grids of k: the lattice holds (S >= 0).
+  EXPECT_TRUE(results.check("wendland_c2_2d_h2_least_stiffness",
+                            lup::leastStiffMode<2>(KernelKind::wendland_c2, 2.0, 64).stiffness,
+                            ">=", 0.0, "the square lattice holds"));
+  EXPECT_TRUE(results.check("wendland_c2_3d_h142_least_stiffness",
+                            lup::leastStiffMode<3>(KernelKind::wendland_c2, 1.42, 16).stiffness,
+                            ">=", 0.0, "the cubic lattice holds"));
 }
 
 }  // namespace
