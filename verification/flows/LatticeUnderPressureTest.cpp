@@ -182,9 +182,10 @@ namespace sph::verification {
 namespace {
 
 TEST(LatticeUnderPressure, StabilityMapOverHOverDx) {
-  // The least stiffness of a mode that keeps the density, over h/dx, for each kernel in 2-D
-  // (square lattice) and 3-D (cubic): where it is below 0 a tank started on the lattice gives way
-  // inside, at the rate growthRate gives. k on a grid of pi / 32 (2-D) and pi / 8 (3-D).
+  // The growth rate of the least stiff mode that keeps the density, over h/dx, for each kernel
+  // in 2-D (square lattice) and 3-D (cubic), sigma in units of sqrt(p / rho) / dx: 0 where the
+  // lattice holds; elsewhere a tank started on it gives way inside at that rate. k on a grid of
+  // pi/32 (2-D) and pi/8 (3-D).
   Results results;
   auto map = [&](auto dim, KernelKind kind, int points) {
     constexpr int D = decltype(dim)::value;
@@ -192,11 +193,12 @@ TEST(LatticeUnderPressure, StabilityMapOverHOverDx) {
     for (int i = 0; i <= 90; ++i) {
       const double hOverDx = 1.2 + 0.02 * i;
       x.push_back(hOverDx);
-      y.push_back(lup::leastStiffMode<D>(kind, hOverDx, points).stiffness);
+      y.push_back(
+          lup::growthRate(lup::leastStiffMode<D>(kind, hOverDx, points).stiffness, 1.0, 1.0));
     }
-    results.history(std::string(name(kind)) + " " + std::to_string(D) + "-D", "h/dx", x,
-                    "least stiffness S (< 0: the lattice gives way)", y,
-                    "LatticeUnderPressure.hpp");
+    results.history(std::string(name(kind)), "h/dx", x,
+                    std::string("sigma dx / sqrt(p/rho), ") + (D == 2 ? "2-D square" : "3-D cubic"),
+                    y, "LatticeUnderPressure.hpp");
   };
   for (KernelKind kind :
        {KernelKind::quadratic, KernelKind::cubic_spline, KernelKind::wendland_c2}) {
