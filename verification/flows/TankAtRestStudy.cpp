@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const Outcome o = run(c, *m);
+  if (!o.ran) std::fprintf(stderr, "tank_at_rest_study: stopped: %s\n", o.why.c_str());
   if (const char* path = std::getenv("TANK_AT_REST_SERIES")) {
     std::FILE* f = std::fopen(path, "w");
     if (!f) {
