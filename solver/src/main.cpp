@@ -13,6 +13,7 @@
 #include "sph/Checkpoint.hpp"
 #include "sph/DomainDecomposition.hpp"
 #include "sph/Interrupt.hpp"
+#include "sph/LatticeUnderPressure.hpp"
 #include "sph/Run.hpp"
 #include "sph/Scene.hpp"
 #include "sph/WaitPolicy.hpp"
@@ -232,6 +233,8 @@ int main(int argc, char** argv) {
                 << "a force evaluation " << e.evaluationSeconds << " s here now, so about "
                 << e.runSeconds << " s of force evaluations (" << e.evaluationsPerStep
                 << " a step)\n";
+      if (const std::string note = sph::latticeUnderPressureNote(scene); !note.empty())
+        std::cout << "  " << note << "\n";
       return sph::exitDone;
     } catch (const std::exception& e) {
       return reportError(e);

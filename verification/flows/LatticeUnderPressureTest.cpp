@@ -1,8 +1,8 @@
-// The lattice under a uniform pressure (LatticeUnderPressure.hpp) against the solver: in a periodic
-// box at p = p0 > 0, the solver's acceleration of a displaced lattice is the analysis's operator,
-// the cubic lattice gives way at the rate the analysis gives, and the square lattice holds with
-// the kernel and h/dx of the named model. This is what starts the 3-D tank at rest moving inside
-// the fluid (verification/README.md).
+// The lattice under a uniform pressure (sph/LatticeUnderPressure.hpp) against the solver: in a
+// periodic box at p = p0 > 0, the solver's acceleration of a displaced lattice is the analysis's
+// operator, the cubic lattice gives way at the rate the analysis gives, and the square lattice
+// holds with the kernel and h/dx of the named model. This is what starts the 3-D tank at rest
+// moving inside the fluid (verification/README.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,13 +11,11 @@
 #include <sstream>
 
 #include "FlowCases.hpp"
-#include "LatticeUnderPressure.hpp"
 #include "Results.hpp"
+#include "sph/LatticeUnderPressure.hpp"
 
 namespace sph::verification {
 namespace {
-
-namespace lup = lattice_under_pressure;
 
 constexpr double kRho0 = 1000.0, kC0 = 10.0, kDx = 0.01;
 // p0 / rho0 = 0.05 c0^2: 20 times below the Tait stiffness, so that the modes that compress are
@@ -106,7 +104,7 @@ TEST(LatticeUnderPressure, SolversForceOnADisplacedLatticeIsTheAnalysisOperator)
     const Seeded<D> s = seed<D>(sim, k, e, eps);
     Derivatives<D> rates;
     sim.rates(sim.particles(), 0.0, rates);
-    const Vec<D> unit = lup::response<D>(kind, hOverDx, k).stiffness * e;
+    const Vec<D> unit = latticeStiffness<D>(kind, hOverDx, k) * e;
     double worst = 0.0, scale = 0.0;
     for (std::size_t i = 0; i < s.site.size(); ++i) {
       const Vec<D> expected = -2.0 * kPOverRho / (kDx * kDx) * unit * eps * kDx * s.phase[i];
@@ -128,7 +126,7 @@ TEST(LatticeUnderPressure, SolversForceOnADisplacedLatticeIsTheAnalysisOperator)
 
 // Runs the box with `mode` seeded at 1e-9 dx to `time` and returns its amplitude over the seed.
 template <int D>
-double growthOver(KernelKind kind, double hOverDx, int cells, const lup::Mode<D>& mode,
+double growthOver(KernelKind kind, double hOverDx, int cells, const LatticeMode<D>& mode,
                   double time) {
   const Scene scene = parseScene(boxScene(D, cells, std::string(name(kind)), hOverDx, time),
                                  "lattice_under_pressure");
@@ -145,14 +143,14 @@ TEST(LatticeUnderPressure, CubicLatticeGivesWayAtTheAnalysisRateWithWendlandAtH2
   // (sigma dt)^2 = 3e-5 at sigma dt = 5e-3, and the amplitude's second-order part at 3e-6 dx
   // (measured 5e-6).
   Results results;
-  const lup::Mode<3> mode = lup::leastStiffMode<3>(KernelKind::wendland_c2, 2.0, 4);
+  const LatticeMode<3> mode = leastStiffLatticeMode<3>(KernelKind::wendland_c2, 2.0, 4);
   ASSERT_LT(mode.stiffness, 0.0);
-  const double sigma = lup::growthRate(mode.stiffness, kPOverRho, kDx), T = 8.0 / sigma;
+  const double sigma = latticeGrowthRate(mode.stiffness, kPOverRho, kDx), T = 8.0 / sigma;
   const double growth = growthOver<3>(KernelKind::wendland_c2, 2.0, 8, mode, T);
   const double measured = std::acosh(growth) / T;
   EXPECT_TRUE(results.check("cubic_wendland_h2_rate_error", std::abs(measured / sigma - 1.0), "<",
-                            1e-3, "LatticeUnderPressure.hpp; integrator error"));
-  results.figure("cubic_wendland_h2_stiffness", mode.stiffness, "LatticeUnderPressure.hpp");
+                            1e-3, "sph/LatticeUnderPressure.hpp; integrator error"));
+  results.figure("cubic_wendland_h2_stiffness", mode.stiffness, "sph/LatticeUnderPressure.hpp");
 }
 
 TEST(LatticeUnderPressure, SquareLatticeHoldsWithWendlandAtH2AndNotAt16) {
@@ -161,11 +159,11 @@ TEST(LatticeUnderPressure, SquareLatticeHoldsWithWendlandAtH2AndNotAt16) {
   // stable mode oscillates, amplitude at most the seed to first order): 1.5 allows the
   // nonlinear part and the round-off modes' share (measured 0.87).
   Results results;
-  const lup::Mode<2> unstable = lup::leastStiffMode<2>(KernelKind::wendland_c2, 1.6, 16);
-  const lup::Mode<2> stable = lup::leastStiffMode<2>(KernelKind::wendland_c2, 2.0, 16);
+  const LatticeMode<2> unstable = leastStiffLatticeMode<2>(KernelKind::wendland_c2, 1.6, 16);
+  const LatticeMode<2> stable = leastStiffLatticeMode<2>(KernelKind::wendland_c2, 2.0, 16);
   ASSERT_LT(unstable.stiffness, 0.0);
   ASSERT_GE(stable.stiffness, 0.0);
-  const double T = 8.0 / lup::growthRate(unstable.stiffness, kPOverRho, kDx);
+  const double T = 8.0 / latticeGrowthRate(unstable.stiffness, kPOverRho, kDx);
   const double growth = growthOver<2>(KernelKind::wendland_c2, 1.6, 32, unstable, T);
   EXPECT_TRUE(results.check("square_wendland_h16_growth_error",
                             std::abs(growth / std::cosh(8.0) - 1.0), "<", 0.01,
@@ -194,11 +192,11 @@ TEST(LatticeUnderPressure, StabilityMapOverHOverDx) {
       const double hOverDx = 1.2 + 0.02 * i;
       x.push_back(hOverDx);
       y.push_back(
-          lup::growthRate(lup::leastStiffMode<D>(kind, hOverDx, points).stiffness, 1.0, 1.0));
+          latticeGrowthRate(leastStiffLatticeMode<D>(kind, hOverDx, points).stiffness, 1.0, 1.0));
     }
     results.history(std::string(name(kind)), "h/dx", x,
                     std::string("sigma dx / sqrt(p/rho), ") + (D == 2 ? "2-D square" : "3-D cubic"),
-                    y, "LatticeUnderPressure.hpp");
+                    y, "sph/LatticeUnderPressure.hpp");
   };
   for (KernelKind kind :
        {KernelKind::quadratic, KernelKind::cubic_spline, KernelKind::wendland_c2}) {
@@ -208,10 +206,10 @@ TEST(LatticeUnderPressure, StabilityMapOverHOverDx) {
   // The named model's kernel in 2-D, and Wendland C2 where SCENES.md points a 3-D scene, on finer
   // grids of k: the lattice holds (S >= 0).
   EXPECT_TRUE(results.check("wendland_c2_2d_h2_least_stiffness",
-                            lup::leastStiffMode<2>(KernelKind::wendland_c2, 2.0, 64).stiffness,
+                            leastStiffLatticeMode<2>(KernelKind::wendland_c2, 2.0, 64).stiffness,
                             ">=", 0.0, "the square lattice holds"));
   EXPECT_TRUE(results.check("wendland_c2_3d_h142_least_stiffness",
-                            lup::leastStiffMode<3>(KernelKind::wendland_c2, 1.42, 16).stiffness,
+                            leastStiffLatticeMode<3>(KernelKind::wendland_c2, 1.42, 16).stiffness,
                             ">=", 0.0, "the cubic lattice holds"));
 }
 
