@@ -8,6 +8,7 @@
 #include "sph/ForceEvaluation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -92,10 +93,14 @@ void ForceEvaluation<D>::operator()(const InteractionSet<D>& set, Derivatives<D>
 // Every entry's renormalised density gradient, into the workspace, where the pair loop's copy of
 // the entries reads it: the fluid's from its pair sums, a halo entry's its source's (a periodic
 // image's is its source's; a hydrostatic mirror ghost's density continues its source's field
-// across the wall, terms/DensityDiffusionAntuono.hpp). The pass builds the neighbour lists where
-// the rates' pass would, which then reuses them: lists asked for without a skin get one of a
-// millionth of the support, so that they are kept for that one reuse (the pairs beyond the
-// support are masked out in both passes, NeighbourLists).
+// across the wall, terms/DensityDiffusionAntuono.hpp). A wall particle (Adami et al. 2012) stands
+// for no fluid particle: its pressure is the fluid's extrapolated along the gradient rho g of a
+// fluid at rest against a wall at rest (eq. 27, FixedWalls), so its density's gradient is that
+// one's, rho g / c^2 with c^2 = dp/drho of eq. (8), and nil where eq. (27) gave the floor p0
+// (there rho = rho0 exactly). The pass builds the neighbour lists where the rates' pass would,
+// which then reuses them: lists asked for without a skin get one of a millionth of the support,
+// so that they are kept for that one reuse (the pairs beyond the support are masked out in both
+// passes, NeighbourLists).
 template <int D>
 void ForceEvaluation<D>::densityGradients(const InteractionSet<D>& set, NeighbourLists& lists) {
   if (!set.ownedParticle.empty())
@@ -111,12 +116,21 @@ void ForceEvaluation<D>::densityGradients(const InteractionSet<D>& set, Neighbou
   }
   gradientLoop_(parameters_, set, Vec<D>::Zero(), lists, w, w.gradientSums);
   for (std::size_t k = set.nFluid; k < set.size(); ++k)
-    if (set.source[k] < 0 || static_cast<std::size_t>(set.source[k]) >= set.nFluid)
-      throw std::invalid_argument(
-          "ForceEvaluation: Antuono et al.'s density diffusion takes a halo entry's density "
-          "gradient from the fluid particle it stands for, and entry " +
-          std::to_string(k) + " stands for none (a wall particle)");
+    if (set.source[k] >= static_cast<int>(set.nFluid))
+      throw std::logic_error("ForceEvaluation: halo entry " + std::to_string(k) +
+                             " stands for entry " + std::to_string(set.source[k]) +
+                             ", which is not a fluid particle");
   w.densityGradient.resize(set.size());
+  const terms::TermParameters& eos = parameters_;
+  Vec<D> g;
+  for (int a = 0; a < D; ++a) g[a] = eos.g[a];
+  auto wallGradient = [&](std::size_t k) -> Vec<D> {
+    const double rho = set.rho[k];
+    if (rho == set.rho0[k]) return Vec<D>::Zero();
+    const double c2 = eos.bulkModulus * eos.gammaInteger / eos.rho0 *
+                      std::pow(rho / eos.rho0, eos.gammaInteger - 1);
+    return rho / c2 * g;
+  };
   const double* sums = w.gradientSums.sums.data();
   const int width = w.gradientSums.sumsWidth;
   const std::int64_t nFluid = static_cast<std::int64_t>(set.nFluid);
@@ -129,7 +143,8 @@ void ForceEvaluation<D>::densityGradients(const InteractionSet<D>& set, Neighbou
     for (std::int64_t i = 0; i < nFluid; ++i)
       G[i] = terms::RenormalisedDensityGradient::gradient<D>(sums + width * i);
 #pragma omp for schedule(static)
-    for (std::int64_t k = nFluid; k < n; ++k) G[k] = G[source[k]];
+    for (std::int64_t k = nFluid; k < n; ++k)
+      G[k] = source[k] >= 0 ? G[source[k]] : wallGradient(static_cast<std::size_t>(k));
   }
   if (lists.skin > 0) lists.reuse = true;
 }

@@ -86,11 +86,6 @@ void readWalls(SceneTable walls, std::vector<SceneTable> obstacles, SceneTable d
                              SceneTable::fmt(s.hOverDx) + ") to 64, got " + std::to_string(layers));
   s.wallLayers = static_cast<int>(layers);
   const bool particles = s.wallModel == WallModel::wall_particles;
-  if (particles && s.terms.densityDiffusion == DensityDiffusion::antuono)
-    walls.fail("model",
-               "density_diffusion_form = \"antuono\" takes a halo entry's density gradient from "
-               "the fluid particle it mirrors, and wall particles mirror none: set [walls] model "
-               "= \"mirror_ghosts\" or another form");
   s.tensileWalls = walls.boolean("tensile", !particles);
   if (particles && s.tensileWalls)
     walls.fail("tensile",
@@ -119,11 +114,6 @@ void readWalls(SceneTable walls, std::vector<SceneTable> obstacles, SceneTable d
                   "wall particles stand still: a wall velocity along the face's normal needs "
                   "[walls] model = \"mirror_ghosts\"");
   for (auto& t : obstacles) {
-    if (s.terms.densityDiffusion == DensityDiffusion::antuono)
-      t.fail("lower",
-             "an obstacle is made of wall particles, and density_diffusion_form = \"antuono\" "
-             "takes a halo entry's density gradient from the fluid particle it mirrors: choose "
-             "another form");
     readObstacle(t, s);
   }
 }

@@ -125,13 +125,6 @@ TEST(BadInput, ShiftingEveryNotAPositiveWholeNumber) {
 
 // Antuono et al.'s form takes a halo entry's density gradient from the fluid particle it mirrors
 // (terms/DensityDiffusionAntuono.hpp): wall particles mirror none.
-TEST(BadInput, AntuonoDiffusionWithWallParticles) {
-  expectRejected("variable_h = true\n",
-                 "variable_h = true\ndensity_diffusion = 0.1\ndensity_diffusion_form = "
-                 "\"antuono\"\n\n[walls]\nmodel = \"wall_particles\"\n",
-                 "walls.model", "wall particles mirror none");
-}
-
 TEST(BadInput, NonIntegerDimension) {
   expectRejected("dimension = 2\n", "dimension = 2.5\n", "dimension", "must be 1, 2 or 3");
 }

@@ -52,8 +52,9 @@ const sph::Phase phases[2] = {{"water", 1000.0, 20.0, 8.9e-4, 0.0, 7.0},
 
 // n particles (300 unless given) in a unit-ish box with random velocity, density (+-3 %),
 // h (+-20 %) and phase.
-// The last 50 entries play the halo: they are neighbours but receive no rates; each stands for
-// one of the first 50 (its source).
+// The last 50 entries play the halo: they are neighbours but receive no rates; each of the first
+// 40 of them stands for one of the first 40 fluid particles (its source), the last 10 for none
+// (wall particles, source -1).
 template <int D>
 sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
   std::mt19937_64 rng(seed);
@@ -70,7 +71,7 @@ sph::InteractionSet<D> randomSet(unsigned seed, int n = 300) {
     s.m.push_back(rho * std::pow(dx, D) * (0.9 + 0.2 * u(rng)));
     s.h.push_back(1.33 * dx * (0.8 + 0.4 * u(rng)));
     s.mu.push_back(ph.mu), s.rho0.push_back(ph.rho0);
-    s.source.push_back(i < n - 50 ? i : i - (n - 50));
+    s.source.push_back(i < n - 50 ? i : i < n - 10 ? i - (n - 50) : -1);
   }
   s.nFluid = n - 50;
   return s;
@@ -134,9 +135,11 @@ double hydrostaticDifference(const sph::InteractionSet<D>& s, std::size_t i, std
 }
 
 // Antuono et al.'s renormalised density gradient of every entry of the set: the fluid's from
-// all its neighbours, a halo entry's its source's.
+// all its neighbours, a halo entry's its source's, a wall particle's rho g / c^2 (dp/drho of the
+// parameters' Tait EOS, eq. 8), nil at rho0 (ForceEvaluation::densityGradients).
 template <int D>
-std::vector<sph::Vec<D>> densityGradients(const sph::InteractionSet<D>& s, KernelKind kind) {
+std::vector<sph::Vec<D>> densityGradients(const sph::InteractionSet<D>& s, KernelKind kind,
+                                          const sph::terms::TermParameters& par) {
   std::vector<sph::Vec<D>> G(s.size());
   for (std::size_t i = 0; i < s.nFluid; ++i) {
     Eigen::Matrix<double, D, D> M = Eigen::Matrix<double, D, D>::Zero();
@@ -156,7 +159,15 @@ std::vector<sph::Vec<D>> densityGradients(const sph::InteractionSet<D>& s, Kerne
                                             std::pow(mean, D);
     G[i] = renormalised ? sph::Vec<D>(M.inverse() * g) : g;
   }
-  for (std::size_t k = s.nFluid; k < s.size(); ++k) G[k] = G[s.source[k]];
+  for (std::size_t k = s.nFluid; k < s.size(); ++k) {
+    if (s.source[k] >= 0) {
+      G[k] = G[s.source[k]];
+      continue;
+    }
+    const double c2 = par.bulkModulus * par.gammaInteger / par.rho0 *
+                      std::pow(s.rho[k] / par.rho0, par.gammaInteger - 1);
+    for (int a = 0; a < D; ++a) G[k][a] = s.rho[k] == s.rho0[k] ? 0.0 : s.rho[k] / c2 * par.g[a];
+  }
   return G;
 }
 
@@ -167,7 +178,7 @@ Reference<D> reference(const sph::InteractionSet<D>& s, KernelKind kind, sph::Te
   const std::size_t nf = s.nFluid;
   const bool antuono = t.densityDiffusion == sph::DensityDiffusion::antuono;
   const std::vector<sph::Vec<D>> G =
-      antuono ? densityGradients<D>(s, kind) : std::vector<sph::Vec<D>>();
+      antuono ? densityGradients<D>(s, kind, par) : std::vector<sph::Vec<D>>();
   Reference<D> ref;
   ref.rates.resize(nf);
   ref.scaleV.assign(nf, 0.0), ref.scaleRho.assign(nf, 0.0), ref.scaleH.assign(nf, 0.0);
