@@ -123,8 +123,6 @@ TEST(BadInput, ShiftingEveryNotAPositiveWholeNumber) {
                  "physics.shifting_every", "must be a whole number");
 }
 
-// Antuono et al.'s form takes a halo entry's density gradient from the fluid particle it mirrors
-// (terms/DensityDiffusionAntuono.hpp): wall particles mirror none.
 TEST(BadInput, NonIntegerDimension) {
   expectRejected("dimension = 2\n", "dimension = 2.5\n", "dimension", "must be 1, 2 or 3");
 }
