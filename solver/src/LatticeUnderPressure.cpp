@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <vector>
 
 namespace sph {
 
@@ -31,54 +32,64 @@ double curvature(KernelKind kind, double r, double h) {
   });
 }
 
-// Calls f(R) for every lattice vector R != 0 within the support 2 hOverDx (units of dx).
-template <int D, class F>
-void forEachNeighbour(double hOverDx, F&& f) {
+// Every lattice vector R != 0 within the support 2 hOverDx (units of dx) with Hess W(R) and
+// grad W(R), which the sums over k reuse.
+template <int D>
+struct Neighbours {
+  std::vector<Vec<D>> R, gradW;
+  std::vector<Eigen::Matrix<double, D, D>> hessW;
+};
+
+template <int D>
+Neighbours<D> neighboursOf(KernelKind kind, double hOverDx) {
+  using Matrix = Eigen::Matrix<double, D, D>;
+  Neighbours<D> out;
   const int n = static_cast<int>(std::ceil(2.0 * hOverDx));
   Eigen::Matrix<int, D, 1> m = Eigen::Matrix<int, D, 1>::Constant(-n);
   while (true) {
     const Vec<D> R = m.template cast<double>();
     const double r = R.norm();
-    if (r > 0.0 && r < 2.0 * hOverDx) f(R, r);
+    if (r > 0.0 && r < 2.0 * hOverDx) {
+      const Vec<D> e = R / r;
+      const Matrix ee = e * e.transpose();
+      const double slope = kernelSlope<D>(kind, r, hOverDx), bend = curvature<D>(kind, r, hOverDx);
+      out.R.push_back(R), out.gradW.push_back(slope * e);
+      out.hessW.push_back(bend * ee + slope / r * (Matrix::Identity() - ee));
+    }
     int a = 0;
     while (a < D && m[a] == n) m[a++] = -n;
-    if (a == D) return;
+    if (a == D) return out;
     ++m[a];
   }
+}
+
+template <int D>
+Eigen::Matrix<double, D, D> stiffnessAt(const Neighbours<D>& nb, const Vec<D>& k) {
+  Eigen::Matrix<double, D, D> S = Eigen::Matrix<double, D, D>::Zero();
+  for (std::size_t j = 0; j < nb.R.size(); ++j) S += nb.hessW[j] * (1.0 - std::cos(k.dot(nb.R[j])));
+  return S;
 }
 
 }  // namespace
 
 template <int D>
 Eigen::Matrix<double, D, D> latticeStiffness(KernelKind kind, double hOverDx, const Vec<D>& k) {
-  using Matrix = Eigen::Matrix<double, D, D>;
-  Matrix S = Matrix::Zero();
-  forEachNeighbour<D>(hOverDx, [&](const Vec<D>& R, double r) {
-    const Vec<D> e = R / r;
-    const Matrix ee = e * e.transpose();
-    const double slope = kernelSlope<D>(kind, r, hOverDx), bend = curvature<D>(kind, r, hOverDx);
-    S += (bend * ee + slope / r * (Matrix::Identity() - ee)) * (1.0 - std::cos(k.dot(R)));
-  });
-  return S;
+  return stiffnessAt<D>(neighboursOf<D>(kind, hOverDx), k);
 }
 
 template <int D>
 LatticeMode<D> leastStiffLatticeMode(KernelKind kind, double hOverDx, int points) {
   using Matrix = Eigen::Matrix<double, D, D>;
-  // grad W(R) for g(k), once.
-  std::vector<Vec<D>> R, slope;
-  forEachNeighbour<D>(hOverDx, [&](const Vec<D>& v, double r) {
-    R.push_back(v), slope.push_back(kernelSlope<D>(kind, r, hOverDx) * v / r);
-  });
+  const Neighbours<D> nb = neighboursOf<D>(kind, hOverDx);
   LatticeMode<D> best;
   best.stiffness = 1e300;
   Eigen::Matrix<int, D, 1> m = Eigen::Matrix<int, D, 1>::Zero();
   while (true) {
     const Vec<D> k = m.template cast<double>() * (std::numbers::pi / points);
     if (m.any()) {
-      const Matrix S = latticeStiffness<D>(kind, hOverDx, k);
+      const Matrix S = stiffnessAt<D>(nb, k);
       Vec<D> g = Vec<D>::Zero();
-      for (std::size_t j = 0; j < R.size(); ++j) g += slope[j] * std::sin(k.dot(R[j]));
+      for (std::size_t j = 0; j < nb.R.size(); ++j) g += nb.gradW[j] * std::sin(k.dot(nb.R[j]));
       // The polarisations normal to g: all of them where g is nil (to round-off).
       Eigen::Matrix<double, D, Eigen::Dynamic> basis;
       if (g.norm() <= 1e-12 * (1.0 + S.norm())) {

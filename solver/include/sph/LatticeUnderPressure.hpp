@@ -2,8 +2,8 @@
 // Whether a lattice at rest holds under a uniform pressure p > 0 in the pressure term of Lobovsky &
 // Kren eq. (12): the square lattice in 2-D, the cubic one in 3-D, spacing dx, as a scene's fluid
 // block starts (verification/README.md, "the lattice under pressure"). Displaced by eps e cos(k.R),
-//   d^2 eps / dt^2 = -(2 p / rho) / dx^2 S(k) eps,  S(k) = dx^(D+2) sum_(R != 0) Hess W(R) (1 - cos
-//   k.R),
+//   d^2 eps / dt^2 = -(2 p / rho) / dx^2 S(k) eps,
+//   S(k) = dx^(D+2) sum_(R != 0) Hess W(R) (1 - cos k.R),
 // for the modes that leave the density unchanged to first order (e normal to g(k) = sum_R grad W(R)
 // sin(k.R); the Tait pressure, eq. 8, resists the others). Where e^T S e < 0 the lattice gives way
 // at sigma = sqrt(-2 (p / rho) e^T S e) / dx. The artificial viscosity (eq. 10, quadratic in the
