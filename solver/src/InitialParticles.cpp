@@ -1,8 +1,10 @@
 #include "sph/InitialParticles.hpp"
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -54,11 +56,12 @@ std::vector<Vec<D>> latticeNodes(const FluidBlock& b, double dx) {
 // closes them with mirror ghosts (Boundaries), so the packing mirrors the fluid there too instead
 // of using solid layers; packed against solid layers the block sat 0.35 dx from such a wall, and
 // the run's ghosts pushed it off at once (measured, README: Cartesian against packed start).
+template <int D>
 std::vector<packing::MirrorWall> ghostWallSides(const FluidBlock& b, const Scene& scene) {
   std::vector<packing::MirrorWall> walls;
   if (b.shape != FluidBlock::Shape::rectangle) return walls;
   const double tol = 1e-9 * scene.dx;
-  for (int a = 0; a < 2; ++a)
+  for (int a = 0; a < D; ++a)
     for (int side = 0; side < 2; ++side) {
       const FaceKind k = scene.faces[a][side];
       const double face = side ? scene.upper[a] : scene.lower[a];
@@ -69,71 +72,126 @@ std::vector<packing::MirrorWall> ghostWallSides(const FluidBlock& b, const Scene
   return walls;
 }
 
-// Solid particles closing the other sides of a rectangular block (its free surface, section 2 of
-// the paper): the nodes of the block's own lattice (latticeNodes) within `layers` of it on the
-// fluid side of every wall, plus their mirror images across the walls (corners: both), as the
-// run's ghosts mirror the fluid. The lattice of the block and the layers is then at rest
+// Solid particles closing the other sides of a block (its free surface, section 2 of the paper):
+// the nodes of the block's own lattice (latticeNodes, extended by `layers` along every axis) that
+// are not fluid nodes, within `layers` dx of the block, on the fluid side of every wall, plus
+// their mirror images across the walls (edges and corners: across each set of them), as the run's
+// ghosts mirror the fluid. The lattice of a rectangle and its layers is then at rest
 // (grad Gamma = 0); packing moves what a free-surface corner or an uneven edge disturbs.
-std::vector<Vec<2>> solidAlongOpenSides(const FluidBlock& b,
+template <int D>
+std::vector<Vec<D>> solidAlongOpenSides(const FluidBlock& b,
                                         const std::vector<packing::MirrorWall>& walls, double dx,
                                         int layers) {
-  const Vec<2> lo(b.lower[0], b.lower[1]);
-  const long nx = latticeCount(b.upper[0] - b.lower[0], dx);
-  const long ny = latticeCount(b.upper[1] - b.lower[1], dx);
-  const auto fluidSide = [&](const Vec<2>& y) {
+  const bool circle = b.shape == FluidBlock::Shape::circle;
+  Vec<D> lo;
+  std::array<long, D> count;
+  for (int a = 0; a < D; ++a) {
+    const double low = circle ? b.center[a] - b.radius : b.lower[a];
+    const double high = circle ? b.center[a] + b.radius : b.upper[a];
+    count[a] = latticeCount(high - low, dx);
+    lo[a] = circle ? b.center[a] - 0.5 * dx * count[a] : low;
+  }
+  const double reach = layers * dx;
+  const auto isFluidNode = [&](const std::array<long, D>& idx, const Vec<D>& y) {
+    if (circle) {
+      double d2 = 0;
+      for (int a = 0; a < D; ++a) d2 += (y[a] - b.center[a]) * (y[a] - b.center[a]);
+      return d2 < b.radius * b.radius;
+    }
+    for (int a = 0; a < D; ++a)
+      if (idx[a] < 0 || idx[a] >= count[a]) return false;
+    return true;
+  };
+  const auto withinReach = [&](const Vec<D>& y) {
+    if (!circle) return true;  // the index box is the block's nodes and `layers` more
+    double d2 = 0;
+    for (int a = 0; a < D; ++a) d2 += (y[a] - b.center[a]) * (y[a] - b.center[a]);
+    return std::sqrt(d2) < b.radius + reach;
+  };
+  const auto fluidSide = [&](const Vec<D>& y) {
     for (const auto& w : walls)
       if (w.fluidSide * (y[w.axis] - w.at) <= 0.0) return false;
     return true;
   };
-  const auto reflect = [](Vec<2> y, const packing::MirrorWall& w) {
-    y[w.axis] = 2.0 * w.at - y[w.axis];
-    return y;
-  };
-  std::vector<Vec<2>> out;
-  for (long i = -layers; i < nx + layers; ++i)
-    for (long j = -layers; j < ny + layers; ++j) {
-      if (i >= 0 && i < nx && j >= 0 && j < ny) continue;  // a fluid node
-      const Vec<2> y = lo + Vec<2>(i + 0.5, j + 0.5) * dx;
-      if (!fluidSide(y)) continue;
-      out.push_back(y);
-      const double reach = layers * dx;
-      for (std::size_t a = 0; a < walls.size(); ++a) {
-        if (std::abs(y[walls[a].axis] - walls[a].at) >= reach) continue;
-        out.push_back(reflect(y, walls[a]));
-        for (std::size_t c = a + 1; c < walls.size(); ++c)
-          if (walls[c].axis != walls[a].axis && std::abs(y[walls[c].axis] - walls[c].at) < reach)
-            out.push_back(reflect(reflect(y, walls[a]), walls[c]));
-      }
+  std::vector<Vec<D>> out;
+  const auto images = [&](const auto& self, const Vec<D>& origin, const Vec<D>& y,
+                          std::size_t first, unsigned axes) -> void {
+    for (std::size_t k = first; k < walls.size(); ++k) {
+      const packing::MirrorWall& w = walls[k];
+      if ((axes >> w.axis) & 1u || std::abs(origin[w.axis] - w.at) >= reach) continue;
+      Vec<D> z = y;
+      z[w.axis] = 2.0 * w.at - z[w.axis];
+      out.push_back(z);
+      self(self, origin, z, k + 1, axes | (1u << w.axis));
     }
+  };
+  for (int a = 0; a < D; ++a)
+    if (count[a] == 0) return out;
+  std::array<long, D> idx;
+  idx.fill(-layers);
+  for (;;) {  // the last axis varies fastest
+    Vec<D> y;
+    for (int a = 0; a < D; ++a) y[a] = lo[a] + (idx[a] + 0.5) * dx;
+    if (!isFluidNode(idx, y) && withinReach(y) && fluidSide(y)) {
+      out.push_back(y);
+      images(images, y, y, 0, 0u);
+    }
+    int a = D - 1;
+    while (a >= 0 && ++idx[a] >= count[a] + layers) idx[a--] = -layers;
+    if (a < 0) break;
+  }
   return out;
 }
 
-// Colagrossi et al. (2012) packing of a 2-D block from its lattice nodes: the block is closed by
-// fixed solid layers (its free surface treated as a wall, section 2), V0 = area / N, eq. (2.16)
-// with the scene's kernel and h/dx, until T / (N beta) < the block's threshold. Returns V0.
-double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<2>>& x,
+// A 3-D block's volume that its N particles share: V0 = volume / N (2-D: packing::Region's area).
+double blockVolume3(const FluidBlock& b) {
+  if (b.shape == FluidBlock::Shape::circle)
+    return 4.0 / 3.0 * std::numbers::pi * b.radius * b.radius * b.radius;
+  return (b.upper[0] - b.lower[0]) * (b.upper[1] - b.lower[1]) * (b.upper[2] - b.lower[2]);
+}
+
+// Colagrossi et al. (2012) packing of a block from its lattice nodes: the block is closed by
+// fixed solid layers (its free surface treated as a wall, section 2) or, on the domain's walls, by
+// the mirror images of the fluid, V0 = volume / N, eq. (2.16) with the scene's kernel and h/dx,
+// until T / (N beta) < the block's threshold. Returns V0. In 2-D a circle's solid layers follow
+// its curve (packing::solidLayers); in 3-D every block's are nodes of its lattice.
+template <int D>
+double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<D>>& x,
                  PackedBlock& report) {
   using namespace packing;
-  std::vector<Piece> path;
-  if (b.shape == FluidBlock::Shape::circle) {
-    const Vec2 c(b.center[0], b.center[1]), p = c + Vec2(b.radius, 0.0);
-    path.push_back(arc(p, p, c, true));
-  } else {
-    const Vec2 lo(b.lower[0], b.lower[1]), hi(b.upper[0], b.upper[1]);
-    path = {segment(lo, {hi.x(), lo.y()}), segment({hi.x(), lo.y()}, hi),
-            segment(hi, {lo.x(), hi.y()}), segment({lo.x(), hi.y()}, lo)};
-  }
-  const Region region(path);
-  const double V0 = region.area() / static_cast<double>(x.size());
   PackingParameters p;
   p.kernel = scene.kernel, p.hOverDx = scene.hOverDx;
   p.alpha = b.packingAlpha, p.maxIterations = b.packingMaxIterations;
   const int layers = static_cast<int>(std::ceil(2.0 * scene.hOverDx - 1e-9));
-  const std::vector<MirrorWall> walls = ghostWallSides(b, scene);
-  ParticlePacking packing(x,
-                          walls.empty() ? solidLayers(region, scene.dx, layers).position
-                                        : solidAlongOpenSides(b, walls, scene.dx, layers),
-                          V0, scene.dx, p);
+  const std::vector<MirrorWall> walls = ghostWallSides<D>(b, scene);
+  double V0 = 0.0;
+  std::vector<Vec<D>> solid;
+  if constexpr (D == 2) {
+    std::vector<Piece> path;
+    if (b.shape == FluidBlock::Shape::circle) {
+      const Vec2 c(b.center[0], b.center[1]), q = c + Vec2(b.radius, 0.0);
+      path.push_back(arc(q, q, c, true));
+    } else {
+      const Vec2 lo(b.lower[0], b.lower[1]), hi(b.upper[0], b.upper[1]);
+      path = {segment(lo, {hi.x(), lo.y()}), segment({hi.x(), lo.y()}, hi),
+              segment(hi, {lo.x(), hi.y()}), segment({lo.x(), hi.y()}, lo)};
+    }
+    const Region region(path);
+    V0 = region.area() / static_cast<double>(x.size());
+    solid = walls.empty() ? solidLayers(region, scene.dx, layers).position
+                          : solidAlongOpenSides<2>(b, walls, scene.dx, layers);
+  } else {
+    V0 = blockVolume3(b) / static_cast<double>(x.size());
+    solid = solidAlongOpenSides<D>(b, walls, scene.dx, layers);
+  }
+  if (b.packingNoise > 0.0) {
+    std::mt19937 rng(2012);  // fixed: a scene packs the same every run
+    std::uniform_real_distribution<double> noise(-b.packingNoise * scene.dx,
+                                                 b.packingNoise * scene.dx);
+    for (Vec<D>& y : x)
+      for (int a = 0; a < D; ++a) y[a] += noise(rng);
+  }
+  ParticlePacking<D> packing(x, std::move(solid), V0, scene.dx, p);
   packing.setMirrorWalls(walls);
   // From rest T = 0: the test applies from the first iteration on.
   report.history.push_back(packing.record());
@@ -190,11 +248,11 @@ Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* pack
     const FluidBlock& b = scene.fluids[k];
     std::vector<Vec<D>> nodes = latticeNodes<D>(b, dx);
     double volume = std::pow(dx, D);
-    if constexpr (D == 2)
+    if constexpr (D >= 2)
       if (b.packed && !nodes.empty()) {
         PackedBlock report;
         report.block = k;
-        volume = packBlock(b, scene, nodes, report);
+        volume = packBlock<D>(b, scene, nodes, report);
         if (packed) packed->push_back(std::move(report));
       }
     Eigen::Matrix<double, D, D> G = Eigen::Matrix<double, D, D>::Zero();

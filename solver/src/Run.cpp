@@ -161,6 +161,7 @@ void writePacking(RunFile& file, const Scene& scene, const PackedBlock& b) {
   file.attribute("converged", std::int64_t(b.converged), g);
   file.attribute("iterations", std::int64_t(b.history.empty() ? 0 : b.history.back().iteration), g);
   file.attribute("stop_kinetic_energy", f.packingStop, g);
+  file.attribute("noise", f.packingNoise, g);
   if (!b.converged && !b.history.empty())
     std::cerr << scene.file << ": warning: the packing of fluid block " << b.block
               << " stopped at max_iterations = " << f.packingMaxIterations

@@ -237,15 +237,20 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
     const std::string start = t.string("initial", "lattice");
     if (start == "packed") {
       b.packed = true;
-      if (D != 2) t.fail("initial", "\"packed\" (Colagrossi et al. 2012 packing) is 2-D only");
+      if (D == 1) t.fail("initial", "\"packed\" (Colagrossi et al. 2012 packing) needs 2-D or 3-D");
     } else if (start != "lattice") {
       t.fail("initial", "expected \"lattice\" or \"packed\", got '" + start + "'");
     }
     if (t.has("packing")) {
       SceneTable pk = t.sub("packing");
-      pk.allow(packingControlKeys);
+      std::vector<std::string> keys = packingControlKeys;
+      keys.push_back("noise");
+      pk.allow(keys);
       if (!b.packed) t.fail("packing", "packing parameters need initial = \"packed\"");
       readPackingControls(pk, b.packingAlpha, b.packingMaxIterations, b.packingStop);
+      b.packingNoise = pk.nonNegative("noise", 0.0);
+      // Below dx/2 every start stays inside its lattice cell, so inside the block.
+      if (b.packingNoise >= 0.5) pk.fail("noise", "must be below 0.5 (a fraction of dx)");
       pk.rejectUnknown();
     }
     b.surface = t.number("surface", hi[D - 1]);

@@ -103,6 +103,7 @@ std::string describe(const sph::Scene& c) {
     s.put(p + ".packing.alpha", b.packingAlpha);
     s.put(p + ".packing.max_iterations", b.packingMaxIterations);
     s.put(p + ".packing.stop_kinetic_energy", b.packingStop);
+    s.put(p + ".packing.noise", b.packingNoise);
   }
   s.put("body_acceleration", c.bodyAcceleration);
   s.put("terms.artificial_viscosity", c.terms.artificialViscosity);

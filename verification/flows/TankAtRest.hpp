@@ -88,9 +88,11 @@ struct Case {
   double aspect = 1.0;  // width / H
   int cells = 20;       // H / dx
   Kernel kernel = quadratic;
-  double horizon = 100.0;  // t sqrt(g / H) at the end
-  double cfl = 0.25;       // numerics.cfl_acoustic, the default
-  int dimension = 2;       // 3: a tank aspect x 1 x 1 H
+  double horizon = 100.0;     // t sqrt(g / H) at the end
+  double cfl = 0.25;          // numerics.cfl_acoustic, the default
+  int dimension = 2;          // 3: a tank aspect x 1 x 1 H
+  bool packed = false;        // start packed (initial = "packed", SCENES.md) instead of the lattice
+  double packingNoise = 0.0;  // [fluid.packing] noise: the packing's start off the lattice
 };
 
 // One of the 100 samples: t sqrt(g/H), max|u| / sqrt(g H) and where it is (x and the height z),
@@ -135,6 +137,9 @@ inline std::string sceneText(const Case& c, const Model& m) {
     << "[[fluid]]\nlower = " << point(0.0, 0.0, 0.0) << "\nupper = " << point(c.aspect * kH, kH, kH)
     << "\n"
     << "initial_pressure = \"hydrostatic\"\n"
+    << (c.packed ? "initial = \"packed\"\n[fluid.packing]\nnoise = " +
+                       std::to_string(c.packingNoise) + "\n"
+                 : "")
     << "[physics]\ngravity = [0.0, " << across << -kG << "]\n"
     << m.physics << "[numerics]\n"
     << m.numerics << "kernel = \"" << c.kernel.name << "\"\ndx = " << kH / c.cells

@@ -172,6 +172,60 @@ TEST(InitialState, RectangleOnWallsIsPackedOnItsLattice) {
   EXPECT_TRUE(packed[0].converged);
 }
 
+// In 3-D, a box closed by solid layers all round, started off its lattice by noise (its lattice and
+// the layers' is an equilibrium, which the packing would keep): V0 = volume / N, the layers keep
+// the particles inside, and the packing evens the distribution out.
+TEST(InitialState, PackedBoxKeepsVolumeAndStaysInside3D) {
+  const std::string text =
+      "name = \"box\"\ndimension = 3\n[domain]\nlower = [-1.0, -1.0, -1.0]\n"
+      "upper = [1.0, 1.0, 1.0]\n[[phase]]\nname = \"water\"\nrho0 = 1000.0\nc0 = 20.0\n"
+      "[[fluid]]\nlower = [-0.3, -0.2, -0.15]\nupper = [0.3, 0.2, 0.15]\ninitial = \"packed\"\n"
+      "[fluid.packing]\nnoise = 0.2\nalpha = 5e-3\n[numerics]\ndx = 0.05\nend_time = 0.1\n";
+  const Scene s = parseScene(text, "box.toml");
+  std::vector<PackedBlock> packed;
+  const Particles<3> p = latticeParticles<3>(s, &packed);
+  ASSERT_EQ(packed.size(), 1u);
+  ASSERT_EQ(p.size(), 12u * 8u * 6u);
+  double volume = 0.0, outside = -INFINITY;
+  const Vec<3> half(0.3, 0.2, 0.15);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    volume += p.m[i] / p.rho[i];
+    for (int a = 0; a < 3; ++a) outside = std::max(outside, std::abs(p.r[i][a]) - half[a]);
+  }
+  const double V = 0.6 * 0.4 * 0.3;
+  const auto& h = packed[0].history;
+  verification::Results r;
+  EXPECT_TRUE(r.check("packed box (3-D): |sum m/rho - V| / V", std::abs(volume / V - 1.0),
+                      "<=", 1e-12, "V0 = volume / N, section 2; round-off"));
+  EXPECT_TRUE(r.check("packed box (3-D): max distance outside the block [m]", outside, "<", 0.0,
+                      "section 2: the fixed solid particles close the domain"));
+  EXPECT_TRUE(packed[0].converged) << "iterations: " << h.back().iteration;
+  EXPECT_TRUE(r.check("packed box (3-D): max |grad Gamma| at the end / at the start",
+                      h.back().maxGradGamma / h.front().maxGradGamma, "<=", 0.1,
+                      "eq. (2.16) drives grad Gamma towards 0 (eq. 1.12)"));
+}
+
+// A 3-D column on a floor and four walls, open above: the mirror images (a corner's three) and the
+// lattice layers above continue the lattice, so grad Gamma = 0 to round-off at the start, the
+// triple images included.
+TEST(InitialState, BoxOnWallsIsPackedOnItsLattice3D) {
+  const std::string text =
+      "name = \"column\"\ndimension = 3\n[domain]\nlower = [0.0, 0.0, 0.0]\n"
+      "upper = [0.3, 0.2, 0.4]\nx_lower = \"free_slip\"\nx_upper = \"free_slip\"\n"
+      "y_lower = \"no_slip\"\ny_upper = \"free_slip\"\nz_lower = \"free_slip\"\n"
+      "z_upper = \"open\"\n[[phase]]\nname = \"water\"\nrho0 = 1000.0\nc0 = 20.0\n[[fluid]]\n"
+      "lower = [0.0, 0.0, 0.0]\nupper = [0.3, 0.2, 0.2]\ninitial = \"packed\"\n"
+      "[fluid.packing]\nmax_iterations = 1\n[numerics]\ndx = 0.02\nend_time = 1.0\n";
+  const Scene s = parseScene(text, "column.toml");
+  std::vector<PackedBlock> packed;
+  const Particles<3> p = latticeParticles<3>(s, &packed);
+  ASSERT_EQ(packed.size(), 1u);
+  verification::Results r;
+  EXPECT_TRUE(r.check("column on walls (3-D): max |grad Gamma| dx at the start",
+                      packed[0].history.front().maxGradGamma * 0.02, "<=", 1e-10,
+                      "mirror images and lattice layers continue the lattice: round-off"));
+}
+
 TEST(InitialState, BadInputNamesTheKey) {
   const std::string base = dropText();
   const std::string G = "[[100.0, 0.0], [0.0, -100.0]]";
@@ -199,6 +253,13 @@ TEST(InitialState, BadInputNamesTheKey) {
                  "unknown key");
   expectRejected(replaced(packed, "max_iterations = 4000", "max_iterations = 1.5"),
                  "fluid[0].packing.max_iterations", "must be a whole number");
+  expectRejected(replaced(packed, "alpha = 5e-3", "noise = 0.5"), "fluid[0].packing.noise",
+                 "must be below 0.5");
+  expectRejected(
+      "name = \"rod\"\ndimension = 1\n[domain]\nlower = [0.0]\nupper = [1.0]\n[[phase]]\n"
+      "name = \"water\"\nrho0 = 1000.0\nc0 = 20.0\n[[fluid]]\nlower = [0.0]\nupper = [0.5]\n"
+      "initial = \"packed\"\n[numerics]\ndx = 0.05\nend_time = 0.1\n",
+      "fluid[0].initial", "needs 2-D or 3-D");
 }
 
 }  // namespace

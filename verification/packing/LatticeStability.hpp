@@ -87,7 +87,7 @@ inline CellOutcome lattice(LatticeKind kind, KernelKind kernel, double hOverDx,
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> noise(-0.01 * dx, 0.01 * dx);
   std::vector<Vec2> reference = base.position, solid;  // the moving particles' lattice sites
-  PeriodicBox box = base.box;
+  PeriodicBox<2> box = base.box;
   if (domain == Domain::bounded) {
     const double margin = 2.0 * hOverDx * dx + dx;
     const PeriodicLattice big = periodicLattice(kind, a, 20.0 * dx + 2.0 * margin);

@@ -39,12 +39,16 @@ struct FluidBlock {
   bool stretching = false;
   double surface = 0.0;  // free-surface height for the hydrostatic start (default: block top)
   // Where the particles start: on the Cartesian lattice, or packed (Colagrossi et al. 2012,
-  // eq. 2.16, 2-D only) inside the block closed by fixed solid layers along its whole boundary,
-  // with the scene's kernel and h/dx; then m = rho V0, V0 = block area / N.
+  // eq. 2.16, 2-D and 3-D) inside the block closed by fixed solid layers or the walls' mirror
+  // images, with the scene's kernel and h/dx; then m = rho V0, V0 = block volume / N.
   bool packed = false;
   double packingAlpha = 2e-3;  // eq. (2.15)
   int packingMaxIterations = 10000;
   double packingStop = 1e-8;  // stop when T / (N beta) falls below (per particle)
+  // Each coordinate of the packing's start moved by uniform noise in [-noise dx, noise dx] (fixed
+  // seed): a lattice that is an equilibrium of eq. (2.16) but an unstable one (the cubic lattice
+  // under Wendland C2 at h/dx 2, LatticeUnderPressure.hpp) leaves it only so.
+  double packingNoise = 0.0;
 };
 
 struct Probe {

@@ -7,97 +7,107 @@
 
 namespace sph::packing {
 
-ParticlePacking::ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0,
-                                 double dx, const PackingParameters& parameters)
+template <int D>
+ParticlePacking<D>::ParticlePacking(std::vector<Vec<D>> fluid, std::vector<Vec<D>> solid, double V0,
+                                    double dx, const PackingParameters& parameters)
     : parameters_(parameters),
       x_(std::move(fluid)),
-      u_(x_.size(), Vec2::Zero()),
+      u_(x_.size(), Vec<D>::Zero()),
       solid_(std::move(solid)),
       V0_(V0),
       h_(parameters.hOverDx * dx) {
-  // eqs. (2.15) and (2.17) with D = 2: the length scale is V0^(1/2).
-  const double l0 = std::sqrt(V0_), c = std::sqrt(parameters_.beta);
+  // eqs. (2.15) and (2.17): the length scale is V0^(1/D).
+  const double l0 = std::pow(V0_, 1.0 / D), c = std::sqrt(parameters_.beta);
   dt_ = parameters_.cfl * l0 / c;
   zeta_ = parameters_.alpha * c / l0;
   evaluate();
 }
 
-ParticlePacking::ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0,
-                                 double dx, const PackingParameters& parameters,
-                                 const PeriodicBox& box)
-    : ParticlePacking(std::vector<Vec2>{}, std::move(solid), V0, dx, parameters) {
+template <int D>
+ParticlePacking<D>::ParticlePacking(std::vector<Vec<D>> fluid, std::vector<Vec<D>> solid, double V0,
+                                    double dx, const PackingParameters& parameters,
+                                    const PeriodicBox<D>& box)
+    : ParticlePacking(std::vector<Vec<D>>{}, std::move(solid), V0, dx, parameters) {
   // Delegated with no fluid so that the first evaluation below already sees the images.
   const double support = 2.0 * h_;  // lambda h, lambda = 2 for every kernel here
-  for (int a = 0; a < 2; ++a)
+  for (int a = 0; a < D; ++a)
     if (!(box.hi[a] - box.lo[a] > 2.0 * support))
       throw std::invalid_argument("periodic box narrower than twice the kernel support");
   periodic_ = true;
   box_ = box;
   x_ = std::move(fluid);
-  u_.assign(x_.size(), Vec2::Zero());
+  u_.assign(x_.size(), Vec<D>::Zero());
   wrap();
   evaluate();
 }
 
-void ParticlePacking::setMirrorWalls(std::vector<MirrorWall> walls) {
+template <int D>
+void ParticlePacking<D>::setMirrorWalls(std::vector<MirrorWall> walls) {
   mirrors_ = std::move(walls);
   evaluate();
 }
 
-void ParticlePacking::wrap() {
-  for (Vec2& x : x_)
-    for (int a = 0; a < 2; ++a) {
+template <int D>
+void ParticlePacking<D>::wrap() {
+  for (Vec<D>& x : x_)
+    for (int a = 0; a < D; ++a) {
       const double L = box_.hi[a] - box_.lo[a];
       x[a] -= L * std::floor((x[a] - box_.lo[a]) / L);
     }
 }
 
-void ParticlePacking::evaluate() {
+template <int D>
+void ParticlePacking<D>::evaluate() {
   const std::size_t nf = x_.size();
+  const double support = 2.0 * h_;
   all_.assign(x_.begin(), x_.end());
   if (periodic_) {
     // Images of the fluid particles within the kernel support of the box, shifted by the sides:
     // they act as fluid particles (the same Gamma, and the fluid half of eq. B.34).
-    const double support = 2.0 * h_;
-    const Vec2 L = box_.hi - box_.lo;
+    const Vec<D> L = box_.hi - box_.lo;
+    int shifts = 1;
+    for (int a = 0; a < D; ++a) shifts *= 3;
     for (std::size_t i = 0; i < nf; ++i)
-      for (int sx = -1; sx <= 1; ++sx)
-        for (int sy = -1; sy <= 1; ++sy) {
-          if (sx == 0 && sy == 0) continue;
-          const Vec2 y = x_[i] + Vec2(sx * L.x(), sy * L.y());
-          if (y.x() > box_.lo.x() - support && y.x() < box_.hi.x() + support &&
-              y.y() > box_.lo.y() - support && y.y() < box_.hi.y() + support)
-            all_.push_back(y);
+      for (int code = 0; code < shifts; ++code) {
+        Vec<D> y = x_[i];
+        bool moved = false, near = true;
+        for (int a = D - 1, rest = code; a >= 0; --a, rest /= 3) {
+          const int s = rest % 3 - 1;  // -1, 0, 1; the first axis varies slowest
+          y[a] += s * L[a];
+          moved |= s != 0;
+          near &= y[a] > box_.lo[a] - support && y[a] < box_.hi[a] + support;
         }
+        if (moved && near) all_.push_back(y);
+      }
   }
   if (!mirrors_.empty()) {
-    // Images across each wall within the kernel support, and across pairs of walls (corners).
-    const double support = 2.0 * h_;
-    auto reflect = [](Vec2 y, const MirrorWall& w) {
-      y[w.axis] = 2.0 * w.at - y[w.axis];
-      return y;
-    };
-    auto near = [&](const Vec2& y, const MirrorWall& w) {
+    // Images across every set of walls on distinct axes that the particle is near: one wall, an
+    // edge's two, a corner's three.
+    const auto near = [&](const Vec<D>& y, const MirrorWall& w) {
       return std::abs(y[w.axis] - w.at) < support;
     };
-    for (std::size_t i = 0; i < nf; ++i)
-      for (std::size_t a = 0; a < mirrors_.size(); ++a) {
-        if (!near(x_[i], mirrors_[a])) continue;
-        all_.push_back(reflect(x_[i], mirrors_[a]));
-        for (std::size_t b = a + 1; b < mirrors_.size(); ++b)
-          if (mirrors_[b].axis != mirrors_[a].axis && near(x_[i], mirrors_[b]))
-            all_.push_back(reflect(reflect(x_[i], mirrors_[a]), mirrors_[b]));
+    const auto images = [&](const auto& self, const Vec<D>& origin, const Vec<D>& y,
+                            std::size_t first, unsigned axes) -> void {
+      for (std::size_t b = first; b < mirrors_.size(); ++b) {
+        const MirrorWall& w = mirrors_[b];
+        if ((axes >> w.axis) & 1u || !near(origin, w)) continue;
+        Vec<D> z = y;
+        z[w.axis] = 2.0 * w.at - z[w.axis];
+        all_.push_back(z);
+        self(self, origin, z, b + 1, axes | (1u << w.axis));
       }
+    };
+    for (std::size_t i = 0; i < nf; ++i) images(images, x_[i], x_[i], 0, 0u);
   }
   const std::size_t nFluidLike = all_.size();
   all_.insert(all_.end(), solid_.begin(), solid_.end());
-  gradGamma_.assign(nf, Vec2::Zero());
+  gradGamma_.assign(nf, Vec<D>::Zero());
   gamma_.assign(nf, 0.0);
   potentialTerm_.assign(nf, 0.0);
   withKernel(parameters_.kernel, [&](auto kernel) {
     using K = decltype(kernel);
     const double radius = K::support * h_, radius2 = radius * radius, h = h_;
-    CellList<2> cells;
+    CellList<D> cells;
     cells.build(all_, radius);
     const auto& order = cells.order();
     const std::int64_t ncells = cells.cells();
@@ -106,20 +116,20 @@ void ParticlePacking::evaluate() {
       for (int k = cells.cellBegin(c); k < cells.cellEnd(c); ++k) {
         const int i = order[k];
         if (static_cast<std::size_t>(i) >= nf) continue;  // solid particles do not move
-        const Vec2 xi = all_[i];
+        const Vec<D> xi = all_[i];
         double sumFluid = 0.0, sumSolid = 0.0;
-        Vec2 grad = Vec2::Zero();
+        Vec<D> grad = Vec<D>::Zero();
         cells.forEachAdjacentRange(c, [&](int begin, int end) {
           for (int kk = begin; kk < end; ++kk) {
             const int j = order[kk];
-            const Vec2 r_ij = xi - all_[j];
+            const Vec<D> r_ij = xi - all_[j];
             const double r2 = r_ij.squaredNorm();
             if (r2 >= radius2) continue;
             const double r = std::sqrt(r2);
-            const double W_ij = K::template W<2>(r, h);
+            const double W_ij = K::template W<D>(r, h);
             (static_cast<std::size_t>(j) < nFluidLike ? sumFluid : sumSolid) += W_ij;
             // grad_i W_ij = dW/dr r_ij / r; the self term (r = 0) has no direction.
-            if (r > 0.0) grad += (K::template dWdr<2>(r, h) / r) * r_ij;
+            if (r > 0.0) grad += (K::template dWdr<D>(r, h) / r) * r_ij;
           }
         });
         gamma_[i] = V0_ * (sumFluid + sumSolid);
@@ -134,7 +144,8 @@ void ParticlePacking::evaluate() {
   potential_ = parameters_.beta * V;
 }
 
-void ParticlePacking::step() {
+template <int D>
+void ParticlePacking<D>::step() {
   // Strang splitting of eq. (2.16): the damping half steps are exact (u *= exp(-zeta dt/2)), the
   // conservative part in between is velocity Verlet (kick, drift, kick). With zeta = 0 it is
   // velocity Verlet itself: symplectic, so E = T + V oscillates by O(dt^2) without drift.
@@ -158,12 +169,13 @@ void ParticlePacking::step() {
   ++iteration_;
 }
 
-PackingRecord ParticlePacking::record() const {
+template <int D>
+PackingRecord ParticlePacking<D>::record() const {
   PackingRecord r;
   r.iteration = iteration_;
   double T = 0.0, g = 0.0;
-  for (const Vec2& u : u_) T += 0.5 * u.squaredNorm();
-  for (const Vec2& gg : gradGamma_) g = std::max(g, gg.norm());
+  for (const Vec<D>& u : u_) T += 0.5 * u.squaredNorm();
+  for (const Vec<D>& gg : gradGamma_) g = std::max(g, gg.norm());
   r.kinetic = T / parameters_.beta;
   r.kineticMean = x_.empty() ? 0.0 : r.kinetic / static_cast<double>(x_.size());
   r.potential = potential_ / parameters_.beta;
@@ -171,7 +183,8 @@ PackingRecord ParticlePacking::record() const {
   return r;
 }
 
-bool ParticlePacking::run(const std::function<void(const PackingRecord&)>& observe) {
+template <int D>
+bool ParticlePacking<D>::run(const std::function<void(const PackingRecord&)>& observe) {
   if (observe) observe(record());
   while (iteration_ < parameters_.maxIterations) {
     step();
@@ -182,11 +195,12 @@ bool ParticlePacking::run(const std::function<void(const PackingRecord&)>& obser
   return false;
 }
 
-HydrostaticFields hydrostatic(const std::vector<Vec2>& x, double V0, const Phase& phase,
+template <int D>
+HydrostaticFields hydrostatic(const std::vector<Vec<D>>& x, double V0, const Phase& phase,
                               double gravity, double surface) {
   HydrostaticFields f;
-  for (const Vec2& p : x) {
-    const double pressure = phase.p0 + phase.rho0 * gravity * (surface - p.y());
+  for (const Vec<D>& p : x) {
+    const double pressure = phase.p0 + phase.rho0 * gravity * (surface - p[D - 1]);
     const double rho = TaitEquationOfState::density(pressure, phase);
     f.pressure.push_back(pressure);
     f.density.push_back(rho);
@@ -194,5 +208,12 @@ HydrostaticFields hydrostatic(const std::vector<Vec2>& x, double V0, const Phase
   }
   return f;
 }
+
+template class ParticlePacking<2>;
+template class ParticlePacking<3>;
+template HydrostaticFields hydrostatic<2>(const std::vector<Vec<2>>&, double, const Phase&, double,
+                                          double);
+template HydrostaticFields hydrostatic<3>(const std::vector<Vec<3>>&, double, const Phase&, double,
+                                          double);
 
 }  // namespace sph::packing

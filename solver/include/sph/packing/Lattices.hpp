@@ -19,7 +19,7 @@ double nearestNeighbour(LatticeKind kind, double dx);
 
 struct PeriodicLattice {
   std::vector<Vec2> position;
-  PeriodicBox box;
+  PeriodicBox<2> box;
 };
 
 // The given lattice with nearest-neighbour distance `spacing` in a periodic box [0, Lx) x [0, Ly)

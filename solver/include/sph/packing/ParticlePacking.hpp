@@ -2,16 +2,15 @@
 // The particle packing algorithm of Colagrossi, Bouscasse, Antuono & Marrone (2012), eq. (2.16):
 //   du_i/dt = -beta grad Gamma_i - zeta u_i,   dr_i/dt = u_i,
 //   Gamma_i = sum_j W_ij V0,  grad Gamma_i = sum_j grad_i W_ij V0  (j over fluid and fixed solid),
-//   beta = 2 p0 / rho0,  zeta = alpha sqrt(beta) / V0^(1/D)  (eq. 2.15),  dt = CFL V0^(1/D) /
-//   sqrt(beta) (eq. 2.17), from rest on a lattice. The fluid particles drift down grad Gamma until
-//   the
-// distribution is as even as the kernel can see (grad Gamma -> 0, eq. 1.12), the fixed solid
-// particles closing the domain along walls and free surface.
+//   beta = 2 p0 / rho0,  zeta = alpha sqrt(beta) / V0^(1/D)  (eq. 2.15),
+//   dt = CFL V0^(1/D) / sqrt(beta)  (eq. 2.17),
+// from rest on a lattice. The fluid particles drift down grad Gamma until the distribution is as
+// even as the kernel can see (grad Gamma -> 0, eq. 1.12), the fixed solid particles closing the
+// domain along walls and free surface.
 //
 // Without damping the system is Lagrangian (Appendix B): E = T + V is conserved, with
-//   T = sum_i |u_i|^2 / 2                                  (eq. 2.18, fluid i; "specific": per unit
-//   mass) V = beta/2 sum_i sum_j W_ij V0 + beta sum_i sum_j' W_ij V0   (eq. B.34; j fluid, j'
-//   solid),
+//   T = sum_i |u_i|^2 / 2  (eq. 2.18, fluid i; "specific": per unit mass),
+//   V = beta/2 sum_i sum_j W_ij V0 + beta sum_i sum_j' W_ij V0  (eq. B.34; j fluid, j' solid),
 // because -dV/dr_i = -beta grad Gamma_i. With damping dE/dt = -2 zeta T (eq. B.33).
 #include <functional>
 #include <vector>
@@ -43,31 +42,35 @@ struct PackingRecord {
   double maxGradGamma = 0.0;  // max_i |grad Gamma_i| [1/m]
 };
 
-// A periodic box [lo, hi) in both axes (Table 1 of the paper studies lattices that fill the
+// A periodic box [lo, hi) in every axis (Table 1 of the paper studies lattices that fill the
 // plane): a particle sees the images of every fluid particle shifted by the box sides, and is
 // wrapped back into the box after each drift. The box must be wider than twice the kernel support.
+template <int D>
 struct PeriodicBox {
-  Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
+  Vec<D> lo = Vec<D>::Zero(), hi = Vec<D>::Zero();
 };
 
 // A straight wall x[axis] = at that the packing sees as the SPH run's mirror ghost wall
-// (Boundaries): fluid particles within the kernel support of it see their mirror images (corners:
-// double images) as fluid, so the packed state is at rest under the boundary the run will use.
+// (Boundaries): fluid particles within the kernel support of it see their mirror images (edges and
+// corners: the images across every subset of the walls they are near) as fluid, so the packed state
+// is at rest under the boundary the run will use.
 struct MirrorWall {
   int axis = 0;
   double at = 0.0;
   int fluidSide = 1;  // +1: the fluid is where x[axis] > at; -1: below
 };
 
+// In D = 2 or 3 dimensions (the paper's eqs. hold in any D; its length scale is V0^(1/D)).
+template <int D>
 class ParticlePacking {
  public:
   // `fluid` moves, `solid` stays; every particle has volume V0; h = hOverDx dx.
-  ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0, double dx,
+  ParticlePacking(std::vector<Vec<D>> fluid, std::vector<Vec<D>> solid, double V0, double dx,
                   const PackingParameters& parameters);
   // The same on a periodic box (solid may be empty); throws std::invalid_argument when a side is
   // not wider than 2 lambda h.
-  ParticlePacking(std::vector<Vec2> fluid, std::vector<Vec2> solid, double V0, double dx,
-                  const PackingParameters& parameters, const PeriodicBox& box);
+  ParticlePacking(std::vector<Vec<D>> fluid, std::vector<Vec<D>> solid, double V0, double dx,
+                  const PackingParameters& parameters, const PeriodicBox<D>& box);
 
   // Mirror the fluid across these walls from now on (the energy of Appendix B is then not exact:
   // an image moves with its particle).
@@ -85,11 +88,11 @@ class ParticlePacking {
   double h() const { return h_; }
   double V0() const { return V0_; }
   const PackingParameters& parameters() const { return parameters_; }
-  const std::vector<Vec2>& positions() const { return x_; }
-  const std::vector<Vec2>& velocities() const { return u_; }
-  void setVelocities(std::vector<Vec2> u) { u_ = std::move(u); }
-  const std::vector<Vec2>& solid() const { return solid_; }
-  const std::vector<Vec2>& gradGamma() const { return gradGamma_; }  // [1/m]
+  const std::vector<Vec<D>>& positions() const { return x_; }
+  const std::vector<Vec<D>>& velocities() const { return u_; }
+  void setVelocities(std::vector<Vec<D>> u) { u_ = std::move(u); }
+  const std::vector<Vec<D>>& solid() const { return solid_; }
+  const std::vector<Vec<D>>& gradGamma() const { return gradGamma_; }  // [1/m]
   const std::vector<double>& gamma() const { return gamma_; }
 
  private:
@@ -98,22 +101,24 @@ class ParticlePacking {
 
   PackingParameters parameters_;
   bool periodic_ = false;
-  PeriodicBox box_;
+  PeriodicBox<D> box_;
   std::vector<MirrorWall> mirrors_;
-  std::vector<Vec2> x_, u_, solid_, all_;
-  std::vector<Vec2> gradGamma_;
+  std::vector<Vec<D>> x_, u_, solid_, all_;
+  std::vector<Vec<D>> gradGamma_;
   std::vector<double> gamma_, potentialTerm_;
   double V0_, h_, dt_, zeta_;
   double potential_ = 0.0;
   int iteration_ = 0;
 };
 
-// Section 2: after packing, the hydrostatic pressure p = p0 + rho0 g (surface - y), the density
-// from the inverse of the Tait equation of state, and the mass m = rho V0.
+// Section 2: after packing, the hydrostatic pressure p = p0 + rho0 g (surface - height), the
+// height the last coordinate, the density from the inverse of the Tait equation of state, and the
+// mass m = rho V0.
 struct HydrostaticFields {
   std::vector<double> pressure, density, mass;
 };
-HydrostaticFields hydrostatic(const std::vector<Vec2>& x, double V0, const Phase& phase,
+template <int D>
+HydrostaticFields hydrostatic(const std::vector<Vec<D>>& x, double V0, const Phase& phase,
                               double gravity, double surface);
 
 }  // namespace sph::packing
