@@ -14,6 +14,12 @@
 // In 3-D (a tank 1 x 1 x 1 H) the named model misses the speed bar at H/dx 20: max|u| 0.0157
 // sqrt(gH), bottom pressure 0.71 % (1,133 s of one core, 2026-12-06); it starts to move at
 // t sqrt(g/H) = 49 (verification/README.md), so that case keeps a regression bound on the speed.
+// That is the cubic lattice giving way under pressure (sph/LatticeUnderPressure.hpp): started
+// packed instead (initial = "packed", noise 0.1 dx; SCENES.md) the same tank meets both bars,
+// max|u| 6.8e-3 sqrt(gH) and bottom 0.71 % (1,321 s of one core, 2026-12-07). Packed starts of
+// the paper's kernels at 4:1, H/dx 20 (the lattice gives way there): quadratic 2.5e-3 sqrt(gH)
+// and 2.2 %, cubic spline 1.2e-2 and 0.87 % (lattice starts: 1.8e-2 and 1.5 %, 1.9e-2 and 0.59 %),
+// kept under regression bounds where they miss a bar.
 // Not here: 4:1 at H/dx 80 (8 times the 4:1 tank at H/dx 40: about 40 min of one core).
 // With Antuono et al.'s diffusion in place of Fourtakas et al.'s (the study's `antuono`), the 4:1
 // tank at H/dx 40: max|u| 2.3e-3 sqrt(gH), bottom 0.82 % (543 s of one core, loaded machine).
@@ -39,7 +45,8 @@ struct NightlyCase {
 // The case's name for gtest (and so for ctest): its kernel, aspect and resolution, not its bytes.
 void PrintTo(const NightlyCase& n, std::ostream* out) {
   *out << n.tank.kernel.name << " " << n.tank.aspect << ":1 H/dx " << n.tank.cells
-       << (n.tank.dimension == 3 ? " 3-D" : "") << ", " << n.model->name;
+       << (n.tank.dimension == 3 ? " 3-D" : "") << (n.tank.packed ? " packed" : "") << ", "
+       << n.model->name;
 }
 
 const char* const bar = "issue 31's bar";
@@ -51,10 +58,10 @@ TEST_P(TankAtRestNightly, HoldsStill) {
   const NightlyCase& n = GetParam();
   const Model& model = *n.model;
   const Outcome o = run(n.tank, model);
-  const std::string what = std::string(n.tank.dimension == 3 ? "3-D " : "") +
-                           "tank at rest, H/dx " + std::to_string(n.tank.cells) + ", " +
-                           std::to_string(int(n.tank.aspect)) + ":1, " + n.tank.kernel.name + ", " +
-                           model.name;
+  const std::string what =
+      std::string(n.tank.dimension == 3 ? "3-D " : "") + (n.tank.packed ? "packed " : "") +
+      "tank at rest, H/dx " + std::to_string(n.tank.cells) + ", " +
+      std::to_string(int(n.tank.aspect)) + ":1, " + n.tank.kernel.name + ", " + model.name;
   std::printf("%s: ran %d to %.1f, max|u|/sqrt(gH) %.3e, bottom %.3e, %.1f s\n", what.c_str(),
               o.ran, o.stoppedAt, o.speed, o.bottom, o.seconds);
   ASSERT_TRUE(o.ran) << what << ": " << o.why;
@@ -80,12 +87,19 @@ INSTANTIATE_TEST_SUITE_P(
         NightlyCase{{4.0, 20, cubicSpline, 100.0}, 0.049, bottomPressureBar, regression},
         NightlyCase{{1.0, 40, cubicSpline, 100.0}, speedBar, bottomPressureBar, bar},
         NightlyCase{{1.0, 20, wendland, 100.0, 0.25, 3}, 0.039, bottomPressureBar, regression},
-        NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar, &antuono}),
+        NightlyCase{{4.0, 40, wendland, 100.0}, speedBar, bottomPressureBar, bar, &antuono},
+        NightlyCase{
+            {1.0, 20, wendland, 100.0, 0.25, 3, true, 0.1}, speedBar, bottomPressureBar, bar},
+        NightlyCase{{4.0, 20, quadratic, 100.0, 0.25, 2, true, 0.1}, speedBar, 0.054, regression},
+        NightlyCase{{4.0, 20, cubicSpline, 100.0, 0.25, 2, true, 0.1},
+                    0.031,
+                    bottomPressureBar,
+                    regression}),
     [](const ::testing::TestParamInfo<NightlyCase>& i) {
       return i.param.tank.kernel.name + "_aspect" + std::to_string(int(i.param.tank.aspect)) +
              "_cells" + std::to_string(i.param.tank.cells) +
              (i.param.tank.dimension == 3 ? "_3d" : "") +
-             (i.param.model == &antuono ? "_antuono" : "");
+             (i.param.model == &antuono ? "_antuono" : "") + (i.param.tank.packed ? "_packed" : "");
     });
 
 // The named model with particle shifting (ParticleShifting.hpp, each form at its default A),
