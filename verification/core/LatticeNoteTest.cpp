@@ -61,6 +61,32 @@ TEST(CheckLatticeNote, WendlandAtH2HoldsTheSquareLatticeAndNotTheCubicOne) {
   EXPECT_NEAR(printedRate(cubic.output), sigma, 5e-3 * sigma) << cubic.output;
 }
 
+TEST(CheckLatticeNote, APackedStartOffTheLatticeHasNoLineAndOneOnItHas) {
+  // The 3-D box packed from its lattice: its lattice and layers are at rest, so the packing keeps
+  // the cubic lattice and the line stays; moved off it by noise, the start is no lattice.
+  const std::string wendland = "kernel = \"wendland_c2\"\nh_over_dx = 2.0";
+  const std::string fluid = "initial_pressure = \"hydrostatic\"\n";
+  const ProgramResult onLattice = runSph(
+      "check '" +
+      editedScene({{"kernel = \"quadratic\"", wendland}, {fluid, fluid + "initial = \"packed\"\n"}},
+                  "hydrostatic_box_3d.toml") +
+      "'");
+  ASSERT_EQ(onLattice.exitCode, 0) << onLattice.output;
+  EXPECT_NE(onLattice.output.find("lattice: the cubic lattice the fluid starts on gives way"),
+            std::string::npos)
+      << onLattice.output;
+  EXPECT_NE(onLattice.output.find("a packed start moved off the lattice holds"), std::string::npos)
+      << onLattice.output;
+  const ProgramResult offLattice =
+      runSph("check '" +
+             editedScene({{"kernel = \"quadratic\"", wendland},
+                          {fluid, fluid + "initial = \"packed\"\n[fluid.packing]\nnoise = 0.1\n"}},
+                         "hydrostatic_box_3d.toml") +
+             "'");
+  ASSERT_EQ(offLattice.exitCode, 0) << offLattice.output;
+  EXPECT_EQ(offLattice.output.find("lattice:"), std::string::npos) << offLattice.output;
+}
+
 TEST(CheckLatticeNote, AFluidWithoutPressureHasNoLine) {
   const ProgramResult r =
       runSph("check '" + editedScene("initial_pressure = \"hydrostatic\"\n", "") + "'");
