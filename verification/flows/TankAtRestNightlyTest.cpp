@@ -106,7 +106,7 @@ INSTANTIATE_TEST_SUITE_P(
 // Wendland C2, H/dx 20, 1:1, to t sqrt(g/H) = 100: measured max|u| 3.8e-3 and 3.8e-3 sqrt(gH),
 // bottom pressure 0.73 % and 0.84 % (Lind, delta-plus), against 3.8e-3 and 0.73 % without.
 TEST(TankAtRestShiftingNightly, NamedModelWithShiftingHoldsStill) {
-  Results r;  // one for the test: each Results writes the test's one file as it goes
+  Results r;  // one for the test: each Results writes the test's one file when destroyed
   for (const Model* m : {&fourtakasLind, &fourtakasDeltaPlus}) {
     const Outcome o = run({1.0, 20, wendland, 100.0}, *m);
     const std::string what = "tank at rest, H/dx 20, 1:1, wendland_c2, " + m->name;

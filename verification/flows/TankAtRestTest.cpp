@@ -19,7 +19,7 @@ namespace sph::verification::tank_at_rest {
 namespace {
 
 // The run's outcome, for further checks, which go into the same `r` (a Results writes the test's
-// one file as it goes: a second one would replace the first's).
+// one file when it is destroyed: a second one would replace the first's).
 Outcome expectStill(Results& r, const Model& m, Case c = {1.0, 20, wendland, 30.0}) {
   const Outcome o = run(c, m);
   std::printf("%s: ran %d to %.1f, max|u|/sqrt(gH) %.3e, bottom pressure %.3e, %.1f s\n",
@@ -79,7 +79,7 @@ TEST(TankAtRest, OtherKernelsHoldStillWhereTheirLatticeHolds) {
     Kernel kernel;
     double bottomMeasured;
   };
-  Results r;  // one for the test: each Results writes the test's one file as it goes
+  Results r;  // one for the test: each Results writes the test's one file when destroyed
   for (const Other& k :
        {Other{{"quadratic", 1.2}, 0.01178}, Other{{"cubic_spline", 1.22}, 0.01486}}) {
     const Outcome o = run({1.0, 20, k.kernel, 100.0}, antuono);
