@@ -92,21 +92,17 @@ std::vector<Vec<D>> solidAlongOpenSides(const FluidBlock& b,
     lo[a] = circle ? b.center[a] - 0.5 * dx * count[a] : low;
   }
   const double reach = layers * dx;
-  const auto isFluidNode = [&](const std::array<long, D>& idx, const Vec<D>& y) {
+  // Not a node of the block (latticeNodes' test), and for a circle within `reach` of it: the index
+  // box of a rectangle already is its nodes and `layers` more.
+  const auto isSolidNode = [&](const std::array<long, D>& idx, const Vec<D>& y) {
     if (circle) {
       double d2 = 0;
       for (int a = 0; a < D; ++a) d2 += (y[a] - b.center[a]) * (y[a] - b.center[a]);
-      return d2 < b.radius * b.radius;
+      return !(d2 < b.radius * b.radius) && std::sqrt(d2) < b.radius + reach;
     }
     for (int a = 0; a < D; ++a)
-      if (idx[a] < 0 || idx[a] >= count[a]) return false;
-    return true;
-  };
-  const auto withinReach = [&](const Vec<D>& y) {
-    if (!circle) return true;  // the index box is the block's nodes and `layers` more
-    double d2 = 0;
-    for (int a = 0; a < D; ++a) d2 += (y[a] - b.center[a]) * (y[a] - b.center[a]);
-    return std::sqrt(d2) < b.radius + reach;
+      if (idx[a] < 0 || idx[a] >= count[a]) return true;
+    return false;
   };
   const auto fluidSide = [&](const Vec<D>& y) {
     for (const auto& w : walls)
@@ -114,17 +110,6 @@ std::vector<Vec<D>> solidAlongOpenSides(const FluidBlock& b,
     return true;
   };
   std::vector<Vec<D>> out;
-  const auto images = [&](const auto& self, const Vec<D>& origin, const Vec<D>& y,
-                          std::size_t first, unsigned axes) -> void {
-    for (std::size_t k = first; k < walls.size(); ++k) {
-      const packing::MirrorWall& w = walls[k];
-      if ((axes >> w.axis) & 1u || std::abs(origin[w.axis] - w.at) >= reach) continue;
-      Vec<D> z = y;
-      z[w.axis] = 2.0 * w.at - z[w.axis];
-      out.push_back(z);
-      self(self, origin, z, k + 1, axes | (1u << w.axis));
-    }
-  };
   for (int a = 0; a < D; ++a)
     if (count[a] == 0) return out;
   std::array<long, D> idx;
@@ -132,9 +117,9 @@ std::vector<Vec<D>> solidAlongOpenSides(const FluidBlock& b,
   for (;;) {  // the last axis varies fastest
     Vec<D> y;
     for (int a = 0; a < D; ++a) y[a] = lo[a] + (idx[a] + 0.5) * dx;
-    if (!isFluidNode(idx, y) && withinReach(y) && fluidSide(y)) {
+    if (isSolidNode(idx, y) && fluidSide(y)) {
       out.push_back(y);
-      images(images, y, y, 0, 0u);
+      packing::appendMirrorImages<D>(y, walls, reach, out);
     }
     int a = D - 1;
     while (a >= 0 && ++idx[a] >= count[a] + layers) idx[a--] = -layers;

@@ -7,6 +7,29 @@
 
 namespace sph::packing {
 
+namespace {
+
+template <int D>
+void appendImages(const Vec<D>& x, const Vec<D>& y, const std::vector<MirrorWall>& walls,
+                  double reach, std::size_t first, unsigned axes, std::vector<Vec<D>>& out) {
+  for (std::size_t k = first; k < walls.size(); ++k) {
+    const MirrorWall& w = walls[k];
+    if ((axes >> w.axis) & 1u || !(std::abs(x[w.axis] - w.at) < reach)) continue;
+    Vec<D> z = y;
+    z[w.axis] = 2.0 * w.at - z[w.axis];
+    out.push_back(z);
+    appendImages<D>(x, z, walls, reach, k + 1, axes | (1u << w.axis), out);
+  }
+}
+
+}  // namespace
+
+template <int D>
+void appendMirrorImages(const Vec<D>& x, const std::vector<MirrorWall>& walls, double reach,
+                        std::vector<Vec<D>>& out) {
+  appendImages<D>(x, x, walls, reach, 0, 0u, out);
+}
+
 template <int D>
 ParticlePacking<D>::ParticlePacking(std::vector<Vec<D>> fluid, std::vector<Vec<D>> solid, double V0,
                                     double dx, const PackingParameters& parameters)
@@ -81,23 +104,7 @@ void ParticlePacking<D>::evaluate() {
       }
   }
   if (!mirrors_.empty()) {
-    // Images across every set of walls on distinct axes that the particle is near: one wall, an
-    // edge's two, a corner's three.
-    const auto near = [&](const Vec<D>& y, const MirrorWall& w) {
-      return std::abs(y[w.axis] - w.at) < support;
-    };
-    const auto images = [&](const auto& self, const Vec<D>& origin, const Vec<D>& y,
-                            std::size_t first, unsigned axes) -> void {
-      for (std::size_t b = first; b < mirrors_.size(); ++b) {
-        const MirrorWall& w = mirrors_[b];
-        if ((axes >> w.axis) & 1u || !near(origin, w)) continue;
-        Vec<D> z = y;
-        z[w.axis] = 2.0 * w.at - z[w.axis];
-        all_.push_back(z);
-        self(self, origin, z, b + 1, axes | (1u << w.axis));
-      }
-    };
-    for (std::size_t i = 0; i < nf; ++i) images(images, x_[i], x_[i], 0, 0u);
+    for (std::size_t i = 0; i < nf; ++i) appendMirrorImages<D>(x_[i], mirrors_, support, all_);
   }
   const std::size_t nFluidLike = all_.size();
   all_.insert(all_.end(), solid_.begin(), solid_.end());
@@ -209,6 +216,10 @@ HydrostaticFields hydrostatic(const std::vector<Vec<D>>& x, double V0, const Pha
   return f;
 }
 
+template void appendMirrorImages<2>(const Vec<2>&, const std::vector<MirrorWall>&, double,
+                                    std::vector<Vec<2>>&);
+template void appendMirrorImages<3>(const Vec<3>&, const std::vector<MirrorWall>&, double,
+                                    std::vector<Vec<3>>&);
 template class ParticlePacking<2>;
 template class ParticlePacking<3>;
 template HydrostaticFields hydrostatic<2>(const std::vector<Vec<2>>&, double, const Phase&, double,

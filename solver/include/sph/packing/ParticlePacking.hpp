@@ -60,6 +60,13 @@ struct MirrorWall {
   int fluidSide = 1;  // +1: the fluid is where x[axis] > at; -1: below
 };
 
+// Appends to `out` the images of x across every set of `walls` on distinct axes whose wall lines
+// x is nearer than `reach` to: one wall's, an edge's two, a corner's three (depth first, in the
+// walls' order).
+template <int D>
+void appendMirrorImages(const Vec<D>& x, const std::vector<MirrorWall>& walls, double reach,
+                        std::vector<Vec<D>>& out);
+
 // In D = 2 or 3 dimensions (the paper's eqs. hold in any D; its length scale is V0^(1/D)).
 template <int D>
 class ParticlePacking {
