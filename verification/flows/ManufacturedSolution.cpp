@@ -1,12 +1,15 @@
 // Issue 3: the method of manufactured solutions for the whole discretisation (Manufactured.hpp).
 //  * In time: fixed particles and resolution, dt refined alone over a short time against a run
 //    with dt/64 of the finest. The predictor-corrector (Heun) and position Verlet are second order.
-//  * In space: dx refined with dt (acoustic CFL), h/dx fixed. Theory: O(h^2) smoothing error
-//    until the discretisation floor of the kernel sums (Quinlan et al. 2006), and particle
-//    disorder from the flow adds to the floor.
+//  * In space, dt refined with h. At fixed h/dx: O(h^2) smoothing error until the discretisation
+//    floor of the kernel sums, set by h/dx alone (Quinlan et al. 2006). With h/dx growing as dx
+//    shrinks, h ~ dx^(1/2) (neighbours ~ N^(1/2), Zhu et al. 2015, as Negi & Ramachandran 2022
+//    discuss), the floor falls with h/dx and the O(h^2) error shows: second order in h.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "FlowCases.hpp"
 #include "Manufactured.hpp"
@@ -23,9 +26,8 @@ Particles<2> runWithSteps(int n, const std::string& kernel, double hOverDx, doub
   Simulation<2> sim = M::simulation(n, kernel, hOverDx, integrator);
   const double dt = t / steps;
   for (int s = 0; s < steps; ++s) {
-    auto f = sim.advance(dt);
+    auto f = M::step(sim, dt);
     EXPECT_FALSE(f) << f->message;
-    EXPECT_DOUBLE_EQ(sim.lastDt(), dt) << "the CFL limit cut the step: refine further";
   }
   return sim.particles();
 }
@@ -84,31 +86,87 @@ TEST(ManufacturedSolution, VelocityVerletIsSecondOrderInTime) {
                           "trapezoidal rules, rates O(dt^2) off");
 }
 
+// The largest errors over a run to T = 1/4 (a quarter period) at n x n particles, steps of a
+// fixed dt below the acoustic (0.2 h / c0) and viscous (0.1 h^2 / nu) limits.
+struct SpatialRun {
+  double h, density = 0, velocity = 0;
+};
+SpatialRun spatialRun(int n, const std::string& kernel, double hOverDx) {
+  const double T = 0.25, h = hOverDx / n;
+  Simulation<2> sim = M::simulation(n, kernel, hOverDx);
+  const int steps = static_cast<int>(std::ceil(T / std::min(0.2 * h / M::c0, 0.1 * h * h / M::nu)));
+  SpatialRun run{h};
+  for (int s = 0; s < steps; ++s) {
+    if (auto f = M::step(sim, T / steps)) {
+      ADD_FAILURE() << f->message;
+      break;
+    }
+    const auto e = M::error(sim.particles(), sim.time());
+    run.density = std::max(run.density, e.density),
+    run.velocity = std::max(run.velocity, e.velocity);
+  }
+  std::printf("%s n %d h/dx %.3f: rho %.4e v %.4e (%d steps)\n", kernel.c_str(), n, hOverDx,
+              run.density, run.velocity, steps);
+  return run;
+}
+
+// The observed orders (density, velocity) against `x` of the runs at n = 16 ... 16 * 2^(count-1),
+// h/dx = hOverDx16 (n / 16)^growth, into `r` as `what`.
+std::pair<double, double> spatialOrders(Results& r, const std::string& kernel, double hOverDx16,
+                                        double growth, int count, const std::string& what,
+                                        const std::string& xLabel) {
+  std::vector<double> x, eRho, eV;
+  for (int i = 0, n = 16; i < count; ++i, n *= 2) {
+    const SpatialRun run = spatialRun(n, kernel, hOverDx16 * std::pow(n / 16.0, growth));
+    x.push_back(xLabel == "h" ? run.h : 1.0 / n), eRho.push_back(run.density),
+        eV.push_back(run.velocity);
+  }
+  const std::string source = "theory 2: O(h^2) smoothing error (Quinlan et al. 2006)";
+  return {r.convergence("MMS density error / (rho0 eps), " + what, xLabel, x, eRho, 2.0, source),
+          r.convergence("MMS velocity error / U, " + what, xLabel, x, eV, 2.0, source)};
+}
+
+// At fixed h/dx. Measured (largest errors over the run):
+//  * the paper's quadratic kernel at its h/dx = 1.33, n = 16, 32, 64: velocity 0.105, 0.020, 0.0074
+//    (order 1.91), density 0.64, 0.17, 0.076 (1.54); at n = 128 the velocity error rises again to
+//    0.0127 (density 0.11): the floor;
+//  * the named model's Wendland C2 at its h/dx = 2, n = 16 ... 128: velocity 0.167 to 0.0043
+//    (order 1.77), density 1.02 to 0.020 (1.89); its floor lies lower.
 TEST(ManufacturedSolution, SpatialErrorAtFixedHOverDx) {
   Results r;
-  const double T = 0.25;
-  std::vector<double> dx, eRho, eV;
-  for (int n : {16, 32, 64}) {
-    Simulation<2> sim = M::simulation(n, "quadratic", 1.33);
-    std::string why;
-    ASSERT_TRUE(runTo(sim, T, &why)) << why;
-    const auto e = M::error(sim.particles(), T);
-    dx.push_back(1.0 / n), eRho.push_back(e.density), eV.push_back(e.velocity);
-    std::printf("n %d  rho %.4e  v %.4e steps %ld\n", n, e.density, e.velocity, sim.step());
-  }
-  r.convergence("MMS density error / (rho0 eps), quadratic h/dx = 1.33", "dx", dx, eRho, 2.0,
-                "Quinlan et al. 2006: O(h^2) until the discretisation floor");
-  const double oV =
-      r.convergence("MMS velocity error / U, quadratic h/dx = 1.33", "dx", dx, eV, 2.0,
-                    "Quinlan et al. 2006: O(h^2) until the discretisation floor");
-  // Measured: velocity 0.108, 0.036, 0.026 (order 1.03), density 0.59, 0.22, 0.14 (order 1.04):
-  // second order from 16 to 32, then the floor of the kernel sums (Operators.cpp) and the
-  // disorder of the moving particles take over. Asserted: the error does fall, at least at
-  // first order over the three resolutions (theory 2 before the floor).
-  EXPECT_TRUE(r.check("MMS velocity observed order, n = 16..64", oV, ">=", 0.8,
-                      "theory 2 until the floor; measured 1.03"));
-  EXPECT_TRUE(r.check("MMS density observed order, n = 16..64", observedOrder(dx, eRho), ">=", 0.8,
-                      "theory 2 until the floor; measured 1.04"));
+  const auto [qRho, qV] =
+      spatialOrders(r, "quadratic", 1.33, 0.0, 3, "quadratic h/dx = 1.33", "dx");
+  EXPECT_TRUE(r.check("MMS velocity observed order, n = 16..64, quadratic h/dx 1.33", qV, ">=", 1.8,
+                      "theory 2 before the floor; measured 1.91"));
+  EXPECT_TRUE(r.check("MMS density observed order, n = 16..64, quadratic h/dx 1.33", qRho,
+                      ">=", 1.4, "theory 2 before the floor; measured 1.54"));
+  const auto [wRho, wV] =
+      spatialOrders(r, "wendland_c2", 2.0, 0.0, 4, "Wendland C2 h/dx = 2", "dx");
+  EXPECT_TRUE(r.check("MMS velocity observed order, n = 16..128, Wendland C2 h/dx 2", wV, ">=", 1.7,
+                      "theory 2 before the floor; measured 1.77"));
+  EXPECT_TRUE(r.check("MMS density observed order, n = 16..128, Wendland C2 h/dx 2", wRho,
+                      ">=", 1.8, "theory 2 before the floor; measured 1.89"));
+}
+
+// Issue 31's bar: second order (1.9 or better) in h with h/dx growing, n = 16 ... 128, for the
+// named model's kernel (Wendland C2, h/dx 1.4 to 3.96: the scene's limit is 4). Measured:
+// velocity 2.04, density 2.20. The paper's quadratic kernel (h/dx 1.33 to 3.76): 1.89 and 1.92; on
+// to n = 256 (h/dx 5.3, past the scene's limit, set by hand) 1.93 and 2.06, so its bar is its
+// measurement.
+TEST(ManufacturedSolution, SecondOrderInHWithHOverDxGrowing) {
+  Results r;
+  const auto [wRho, wV] =
+      spatialOrders(r, "wendland_c2", 1.4, 0.5, 4, "Wendland C2, h ~ dx^(1/2)", "h");
+  EXPECT_TRUE(r.check("MMS velocity observed order in h, Wendland C2, h/dx growing", wV, ">=", 1.9,
+                      "theory 2, minus 0.1 (issue 31)"));
+  EXPECT_TRUE(r.check("MMS density observed order in h, Wendland C2, h/dx growing", wRho, ">=", 1.9,
+                      "theory 2, minus 0.1 (issue 31)"));
+  const auto [qRho, qV] =
+      spatialOrders(r, "quadratic", 1.33, 0.5, 4, "quadratic, h ~ dx^(1/2)", "h");
+  EXPECT_TRUE(r.check("MMS velocity observed order in h, quadratic, h/dx growing", qV, ">=", 1.8,
+                      "theory 2; measured 1.89 (1.93 on to n = 256)"));
+  EXPECT_TRUE(r.check("MMS density observed order in h, quadratic, h/dx growing", qRho, ">=", 1.8,
+                      "theory 2; measured 1.92 (2.06 on to n = 256)"));
 }
 
 }  // namespace

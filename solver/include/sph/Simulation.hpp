@@ -101,6 +101,9 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const Particles<D>& particles() const { return y_; }
   Particles<D>& particles() { return y_; }
+  // After an edit of particles() between steps: the next step evaluates their rates anew instead
+  // of taking those the last step left.
+  void particlesEdited() { ratesValid_ = false; }
   // The set of the last evaluation (of a trial state with velocity Verlet).
   const InteractionSet<D>& interactionSet() const { return set_; }
   // The set of the current state: the last evaluation's, or (where that was of a trial state,
