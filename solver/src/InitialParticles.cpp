@@ -135,6 +135,22 @@ double blockVolume3(const FluidBlock& b) {
   return (b.upper[0] - b.lower[0]) * (b.upper[1] - b.lower[1]) * (b.upper[2] - b.lower[2]);
 }
 
+// In 2-D a circle away from the walls is closed by solid layers along its curve (packBlock); every
+// other block's layers and mirror images continue its lattice.
+template <int D>
+bool layersFollowCurve(const FluidBlock& b, const std::vector<packing::MirrorWall>& walls) {
+  return D == 2 && b.shape == FluidBlock::Shape::circle && walls.empty();
+}
+
+}  // namespace
+
+template <int D>
+bool packingLeavesLattice(const FluidBlock& b, const Scene& scene) {
+  return b.packed && (b.packingNoise > 0.0 || layersFollowCurve<D>(b, ghostWallSides<D>(b, scene)));
+}
+
+namespace {
+
 // Colagrossi et al. (2012) packing of a block from its lattice nodes: the block is closed by
 // fixed solid layers (its free surface treated as a wall, section 2) or, on the domain's walls, by
 // the mirror images of the fluid, V0 = volume / N, eq. (2.16) with the scene's kernel and h/dx,
@@ -163,6 +179,7 @@ double packBlock(const FluidBlock& b, const Scene& scene, std::vector<Vec<D>>& x
     }
     const Region region(path);
     V0 = region.area() / static_cast<double>(x.size());
+    // (a rectangle's layers, on its sides' lattice, continue the block's: layersFollowCurve)
     solid = walls.empty() ? solidLayers(region, scene.dx, layers).position
                           : solidAlongOpenSides<2>(b, walls, scene.dx, layers);
   } else {
@@ -272,6 +289,9 @@ Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* pack
   return out;
 }
 
+template bool packingLeavesLattice<1>(const FluidBlock&, const Scene&);
+template bool packingLeavesLattice<2>(const FluidBlock&, const Scene&);
+template bool packingLeavesLattice<3>(const FluidBlock&, const Scene&);
 template Particles<1> latticeParticles<1>(const Scene&, std::vector<PackedBlock>*);
 template Particles<2> latticeParticles<2>(const Scene&, std::vector<PackedBlock>*);
 template Particles<3> latticeParticles<3>(const Scene&, std::vector<PackedBlock>*);

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <vector>
 
+#include "sph/InitialParticles.hpp"
+
 namespace sph {
 
 namespace {
@@ -125,13 +127,11 @@ std::string latticeUnderPressureNote(const Scene& scene) {
   double g = 0;
   for (double c : scene.bodyAcceleration) g += c * c;
   g = std::sqrt(g);
-  // The largest p / rho0 a block starts at on its lattice: its bottom's, hydrostatic or p0. A
-  // packed block leaves its lattice when noise moves its start off it, or in 2-D when its solid
-  // layers follow a circle (SCENES.md); otherwise the packing keeps the lattice, stable or not.
+  // The largest p / rho0 a block starts at on its lattice: its bottom's, hydrostatic or p0.
   double pOverRho = 0.0;
   for (const FluidBlock& b : scene.fluids) {
     const bool circle = b.shape == FluidBlock::Shape::circle;
-    if (b.packed && (b.packingNoise > 0.0 || (D == 2 && circle))) continue;
+    if (D == 2 ? packingLeavesLattice<2>(b, scene) : packingLeavesLattice<3>(b, scene)) continue;
     const Phase& ph = scene.phases[b.phase];
     const double bottom = circle ? b.center[D - 1] - b.radius : b.lower[D - 1];
     const double p = ph.p0 + (b.hydrostatic ? ph.rho0 * g * (b.surface - bottom) : 0.0);

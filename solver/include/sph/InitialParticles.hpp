@@ -27,6 +27,12 @@ struct PackedBlock {
 // be exact in a double (RunBudget refuses such a dx before any particle is made).
 long latticeCount(double width, double dx);
 
+// Whether the packing of block `b` (initial = "packed") moves it off its lattice: noise does, and
+// so do solid layers that follow a 2-D circle's curve (one away from the walls). Otherwise every
+// node is in balance under eq. (2.16), and the packing keeps the lattice, stable or not.
+template <int D>
+bool packingLeavesLattice(const FluidBlock& b, const Scene& scene);
+
 // `packed`, when given, receives one entry per block with initial = "packed".
 template <int D>
 Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* packed = nullptr);
