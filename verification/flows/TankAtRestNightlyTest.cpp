@@ -1,6 +1,8 @@
 // Issue 31 (nightly): the tank at rest of TankAtRest.hpp to t sqrt(g/H) = 100 with the named
 // model (the paper's terms with Fourtakas et al.'s density diffusion, delta 0.1), one ctest entry
-// a case. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars (measured
+// a case. The bottom pressures quoted below were read against rho0 g H; against the column's
+// weight (TankAtRest.hpp, from 2026-12-07) each reads 0.4-0.5 % less: verification/README.md has
+// both. The named model's kernel, Wendland C2 at h/dx 2, must meet issue 31's bars (measured
 // with validation/stability/tank_at_rest_study.py: max|u| 3.8e-3, 4.0e-3, 2.8e-3, 5.2e-3, 5.2e-3
 // sqrt(gH) and bottom pressure 0.73, 0.73, 0.60, 0.60, 0.64 % at H/dx 20 1:1, 20 4:1, 40 1:1,
 // 40 4:1, 80 1:1; the last two took 284 and 553 s of one core). The paper's quadratic kernel and
@@ -68,7 +70,7 @@ TEST_P(TankAtRestNightly, HoldsStill) {
   Results r;
   EXPECT_TRUE(r.check(what + ": max|u| / sqrt(gH), second half of t sqrt(g/H) = 100", o.speed, "<",
                       n.speedBound, n.source));
-  EXPECT_TRUE(r.check(what + ": max |p_bottom / (rho0 g H) - 1|, second half", o.bottom, "<",
+  EXPECT_TRUE(r.check(what + ": max |p_bottom / (g M / A) - 1|, second half", o.bottom, "<",
                       n.bottomBound, n.source));
 }
 
@@ -115,7 +117,7 @@ TEST(TankAtRestShiftingNightly, NamedModelWithShiftingHoldsStill) {
     ASSERT_TRUE(o.ran) << what << ": " << o.why;
     EXPECT_TRUE(r.check(what + ": max|u| / sqrt(gH), second half of t sqrt(g/H) = 100", o.speed,
                         "<", speedBar, bar));
-    EXPECT_TRUE(r.check(what + ": max |p_bottom / (rho0 g H) - 1|, second half", o.bottom, "<",
+    EXPECT_TRUE(r.check(what + ": max |p_bottom / (g M / A) - 1|, second half", o.bottom, "<",
                         bottomPressureBar, bar));
   }
 }
