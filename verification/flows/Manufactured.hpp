@@ -117,8 +117,10 @@ struct Manufactured {
     return std::nullopt;
   }
 
+  // `physics`: further [physics] lines (a term beside Morris viscosity).
   static std::string scene(int n, const std::string& kernel, double hOverDx,
-                           const std::string& integrator = "predictor_corrector") {
+                           const std::string& integrator = "predictor_corrector",
+                           const std::string& physics = "") {
     const std::string zeros = D == 2 ? "[0.0, 0.0]" : "[0.0, 0.0, 0.0]";
     const std::string ones = D == 2 ? "[1.0, 1.0]" : "[1.0, 1.0, 1.0]";
     std::ostringstream s;
@@ -132,15 +134,16 @@ struct Manufactured {
     s << "[[phase]]\nname = \"fluid\"\nrho0 = " << rho0 << "\nc0 = " << c0 << "\nmu = " << nu * rho0
       << "\ngamma = " << gamma << "\n[[fluid]]\nlower = " << zeros << "\nupper = " << ones
       << "\n[physics]\nmorris_viscosity = true\n"
-      << "[numerics]\nkernel = \"" << kernel << "\"\ndx = " << 1.0 / n
+      << physics << "[numerics]\nkernel = \"" << kernel << "\"\ndx = " << 1.0 / n
       << "\nh_over_dx = " << hOverDx << "\nintegrator = \"" << integrator << "\"\nend_time = 1.0\n";
     return s.str();
   }
 
   // The lattice of `scene` carrying the exact fields at t = 0, with V_j = dx^D (m = rho dx^D).
   static Simulation<D> simulation(int n, const std::string& kernel, double hOverDx,
-                                  const std::string& integrator = "predictor_corrector") {
-    const Scene sc = parseScene(scene(n, kernel, hOverDx, integrator), "mms");
+                                  const std::string& integrator = "predictor_corrector",
+                                  const std::string& physics = "") {
+    const Scene sc = parseScene(scene(n, kernel, hOverDx, integrator, physics), "mms");
     Particles<D> p = latticeParticles<D>(sc);
     for (std::size_t i = 0; i < p.size(); ++i) {
       p.rho[i] = density(p.r[i], 0.0), p.v[i] = velocity(p.r[i], 0.0);
