@@ -182,7 +182,7 @@ TEST(ManufacturedSolution, SecondOrderInHWithHOverDxGrowing) {
 // Measured: at h/dx 2, n 16-128, density 2.08, velocity 1.94; with h/dx growing (1.4 to 3.96), in
 // h, 2.36 and 2.30. The diffusion (delta h c0 lap rho, first order in h) and the artificial
 // viscosity (a viscosity of order beta h c0 where the flow converges) do not show their O(h) over
-// this range: at n = 128 the diffusion is some 1e-3 of d rho/dt here, and the velocity error falls
+// this range: at n = 128 the diffusion is some 0.2 % of d rho/dt here, and the velocity error falls
 // with it.
 TEST(ManufacturedSolution, NamedModelTerms) {
   Results r;
