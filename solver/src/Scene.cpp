@@ -543,7 +543,7 @@ Scene parseScene(const std::string& text, const std::string& file) {
   SceneTable physics = top.sub("physics");
   physics.allow({"gravity", "body_force", "artificial_viscosity", "morris_viscosity", "variable_h",
                  "density_diffusion", "density_diffusion_form", "shifting", "shifting_coefficient",
-                 "shifting_surface_threshold", "shifting_every"});
+                 "shifting_surface_threshold", "shifting_every", "continuity_form"});
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
@@ -551,6 +551,11 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.terms.artificialViscosity = s.beta > 0.0;
   s.terms.morrisViscosity = physics.boolean("morris_viscosity", false);
   s.terms.variableH = physics.boolean("variable_h", false);
+  const std::string continuity = physics.string("continuity_form", "lobovsky_kren");
+  if (continuity != "lobovsky_kren" && continuity != "colagrossi_landrini")
+    physics.fail("continuity_form", "unknown form '" + continuity +
+                                        "' (expected lobovsky_kren or colagrossi_landrini)");
+  s.continuityByVolume = continuity == "colagrossi_landrini";
   readDensityDiffusion(physics, s);
   readShifting(physics, s);
   physics.rejectUnknown();

@@ -91,7 +91,9 @@ void ghostDensitiesFromPressure(const std::vector<Phase>& phases, InteractionSet
 // The terms' parameters: density diffusion takes c0 (and, in Fourtakas et al.'s form, the
 // EOS and g) of the scene's one phase.
 terms::TermParameters termParametersOf(const Scene& scene) {
-  terms::TermParameters t{.beta = scene.beta, .diffusionDelta = scene.diffusionDelta};
+  terms::TermParameters t{.beta = scene.beta,
+                          .continuityByVolume = scene.continuityByVolume,
+                          .diffusionDelta = scene.diffusionDelta};
   t.spacing = scene.dx;
   if (scene.phases.empty()) return t;
   const Phase& water = scene.phases[0];

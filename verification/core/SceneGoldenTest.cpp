@@ -111,6 +111,7 @@ std::string describe(const sph::Scene& c) {
   s.put("terms.variable_h", c.terms.variableH);
   s.put("terms.density_diffusion", static_cast<int>(c.terms.densityDiffusion));
   s.put("beta", c.beta), s.put("diffusion_delta", c.diffusionDelta);
+  s.put("continuity_by_volume", c.continuityByVolume);
   s.put("kernel", std::string(sph::name(c.kernel))), s.put("dx", c.dx);
   s.put("h_over_dx", c.hOverDx), s.put("cfl_acoustic", c.cflAcoustic);
   s.put("cfl_viscous", c.cflViscous), s.put("cfl_force", c.cflForce);

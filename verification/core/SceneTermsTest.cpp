@@ -150,4 +150,26 @@ TEST(SceneTerms, FourtakasFormNeedsAWholeGamma) {
   EXPECT_NE(r.output.find("7.5"), std::string::npos) << r.output;
 }
 
+// continuity_form = "colagrossi_landrini" (terms/ContinuityEquation.hpp) changes a two-phase run;
+// an unknown form is refused with its key.
+TEST(SceneTerms, ContinuityByVolumeRunsWhenTheSceneAsksForIt) {
+  const std::string dir = freshOutputDirectory();
+  const std::string byMass = twoPhases(dir, 20.0);
+  std::string text = readText(byMass);
+  text.replace(text.find("[physics]\n"), 10,
+               "[physics]\ncontinuity_form = \"colagrossi_landrini\"\n");
+  writeText(dir + "/by_volume.toml", text);
+  ASSERT_EQ(runSph("run '" + byMass + "' --quiet --out '" + dir + "/m'").exitCode, 0);
+  ASSERT_EQ(runSph("run '" + dir + "/by_volume.toml' --quiet --out '" + dir + "/v'").exitCode, 0);
+  const std::string a = dir + "/v/small_tank.h5", b = dir + "/m/small_tank.h5";
+  EXPECT_EQ(stringAttribute(a, "/", "status"), "stable");
+  EXPECT_NE(readDoubles(a, "/series/rho_max"), readDoubles(b, "/series/rho_max"))
+      << "the form changed nothing";
+  const ProgramResult r =
+      runSph("check '" + withPhysics("continuity_form = \"summation\"", dir) + "'");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("'physics.continuity_form'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("summation"), std::string::npos) << r.output;
+}
+
 }  // namespace

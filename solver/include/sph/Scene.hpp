@@ -104,7 +104,10 @@ struct Scene {
   std::vector<FluidBlock> fluids;
   std::vector<double> bodyAcceleration;  // gravity plus any driving force, F/rho [m/s^2]
   TermSwitches terms;
-  double beta = 0.0;            // artificial viscosity, eq. (10)
+  double beta = 0.0;  // artificial viscosity, eq. (10)
+  // physics.continuity_form: d rho_i/dt from the neighbours' masses (eq. 11) or from their
+  // volumes (Colagrossi & Landrini 2003; terms/ContinuityEquation.hpp).
+  bool continuityByVolume = false;
   double diffusionDelta = 0.0;  // density diffusion delta (terms.densityDiffusion: its form)
   ShiftingParameters shifting;  // particle shifting, once a step (ParticleShifting.hpp)
   KernelKind kernel = KernelKind::quadratic;
