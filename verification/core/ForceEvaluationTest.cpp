@@ -391,13 +391,14 @@ void keptLists(unsigned seed) {
 // but does not declare is 0 in the loop.
 TEST(ForceEvaluation, RecordHoldsTheFieldsTheTermsRead) {
   using namespace sph::terms;
+  // The continuity equation reads m, rho and 1 / rho (either form: ContinuityEquation.hpp).
   using Inviscid = TermSet<ContinuityEquation, PressureGradient, ArtificialViscosity>;
-  EXPECT_TRUE(Inviscid::reads.mass && Inviscid::reads.pressure);
-  EXPECT_TRUE(Inviscid::reads.density);  // 1 / (rho_i + rho_j) of eq. (10)
-  EXPECT_FALSE(Inviscid::reads.densityInverse || Inviscid::reads.viscosity);  // no extra record
+  EXPECT_TRUE(Inviscid::reads.mass && Inviscid::reads.pressure && Inviscid::reads.density);
+  EXPECT_TRUE(Inviscid::reads.rhoSumInverse);  // 1 / (rho_i + rho_j) of eq. (10)
+  EXPECT_FALSE(Inviscid::reads.viscosity || Inviscid::reads.restDensity);  // no extra record
   using Morris = TermSet<ContinuityEquation, PressureGradient, MorrisViscosity>;
   EXPECT_TRUE(Morris::reads.viscosity && Morris::reads.densityInverse);
-  EXPECT_FALSE(Morris::reads.density);  // not gathered in 3-D
+  EXPECT_FALSE(Morris::reads.rhoSumInverse || Morris::reads.restDensity);  // no extra record
   using Diffusive = TermSet<ContinuityEquation, PressureGradient, DensityDiffusionFourtakas>;
   EXPECT_TRUE(Diffusive::reads.density && Diffusive::reads.densityInverse);
   EXPECT_FALSE(Diffusive::reads.viscosity);
