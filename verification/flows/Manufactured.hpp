@@ -74,11 +74,9 @@ struct Manufactured {
   static double density(const Vec<D>& x, double t) { return at(x, t).rho; }
   static Vec<D> velocity(const Vec<D>& x, double t) { return at(x, t).v; }
 
-  // S_rho at x and t.
-  static double massSource(const Vec<D>& x, double t) {
-    const Point p = at(x, t);
-    return p.rhot + p.v.dot(p.gradRho) + p.rho * p.divV;
-  }
+  // S_rho at a point, and at x and t.
+  static double massSource(const Point& p) { return p.rhot + p.v.dot(p.gradRho) + p.rho * p.divV; }
+  static double massSource(const Vec<D>& x, double t) { return massSource(at(x, t)); }
 
   // Adds S_rho and S_v at every particle.
   static void source(double t, const Particles<D>& s, Derivatives<D>& out) {
@@ -86,7 +84,7 @@ struct Manufactured {
       const Point p = at(s.r[i], t);
       const double dpdrho = c0 * c0 * std::pow(p.rho / rho0, gamma - 1);
       const double mu = nu * rho0;
-      out.drhodt[i] += p.rhot + p.v.dot(p.gradRho) + p.rho * p.divV;
+      out.drhodt[i] += massSource(p);
       for (int q = 0; q < D; ++q) {
         double advection = 0.0;
         for (int r = 0; r < D; ++r) advection += p.v[r] * p.gradV[q][r];
