@@ -93,6 +93,7 @@ void ghostDensitiesFromPressure(const std::vector<Phase>& phases, InteractionSet
 terms::TermParameters termParametersOf(const Scene& scene) {
   terms::TermParameters t{.beta = scene.beta,
                           .continuityByVolume = scene.continuityByVolume,
+                          .pressureGradientByVolume = scene.continuityByVolume,
                           .diffusionDelta = scene.diffusionDelta};
   t.spacing = scene.dx;
   if (scene.phases.empty()) return t;

@@ -5,10 +5,13 @@
 //   rate of one inside its phase, d rho/dt = -rho div v as the lattice's sums give it;
 // * from their masses (eq. 11) it does not: the other phase's velocities count rho0_j / rho0_i
 //   times, so the divergence at the interface is off.
+// And each form with the pressure gradient of its pair (terms/PressureGradient.hpp) conserves
+// energy: the pressure force's power is minus the rate of internal energy, pair by pair.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "Results.hpp"
 #include "sph/ForceEvaluation.hpp"
@@ -66,6 +69,55 @@ TEST(ContinuityForm, ByVolumeKeepsTheDivergenceAcrossAnInterface) {
   // The mass form at the interface: measured 0.19 (a light particle next to the heavy phase).
   EXPECT_TRUE(r.check("the same with continuity by mass (eq. 11)", interfaceError(false),
                       ">=", 0.05, "its heavy neighbours count 1.5 times: a finding, not a bar"));
+}
+
+// sum_i m_i v_i . dv_i/dt + sum_i m_i p_i / rho_i^2 d rho_i/dt (the kinetic and the internal
+// energy's rates from the pressure terms alone) over the scale sum_i |m_i v_i . dv_i/dt|: two
+// phases on a lattice moved by 0.2 dx at random, random velocities and densities within 1 % of
+// rest, p from the Tait equation (c0 = 20 m/s, gamma 7), h varying by 10 %, every pair inside the
+// block (no walls, no halo).
+double energyRate(bool continuityByVolume, bool pressureByVolume) {
+  auto s = twoPhases();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double dx = L / n;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    s.x[i] += sph::Vec<2>(u(random), u(random)) * (0.2 * dx);
+    s.v[i] = sph::Vec<2>(u(random), u(random));
+    s.rho[i] = s.rho0[i] * (1.0 + 0.01 * u(random));
+    s.p[i] = s.rho0[i] * 20.0 * 20.0 / 7.0 * (std::pow(s.rho[i] / s.rho0[i], 7.0) - 1.0);
+    s.h[i] *= 1.0 + 0.1 * u(random);
+  }
+  sph::ForceEvaluation<2> forces(
+      sph::KernelKind::quadratic, sph::TermSwitches{},
+      sph::terms::TermParameters{.continuityByVolume = continuityByVolume,
+                                 .pressureGradientByVolume = pressureByVolume});
+  sph::Derivatives<2> out;
+  forces(s, out);
+  double rate = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < s.nFluid; ++i) {
+    const double kinetic = s.m[i] * s.v[i].dot(out.dvdt[i]);
+    rate += kinetic + s.m[i] * s.p[i] / (s.rho[i] * s.rho[i]) * out.drhodt[i];
+    scale += std::abs(kinetic);
+  }
+  return std::abs(rate) / scale;
+}
+
+TEST(ContinuityForm, EachFormConservesEnergyWithItsPressureGradient) {
+  sph::verification::Results r;
+  // Measured 2.5e-18 (by mass) and 3.7e-18 (by volume); sums of 576 particles' shares, bound
+  // 1e-12.
+  EXPECT_TRUE(
+      r.check("|dE/dt| / sum |m v . dv/dt|, continuity and pressure gradient by mass "
+              "(eqs. 11-12)",
+              energyRate(false, false), "<=", 1e-12, "round-off: the pair conserves energy"));
+  EXPECT_TRUE(r.check("the same by volume (Colagrossi & Landrini 2003)", energyRate(true, true),
+                      "<=", 1e-12, "round-off: the pair conserves energy"));
+  // The continuity by volume with eq. (12): measured 1.7e-3, fifteen orders above the pairs'.
+  EXPECT_TRUE(r.check("the same for the continuity by volume with eq. (12)'s pressure gradient",
+                      energyRate(true, false), ">=", 1e-8,
+                      "not a pair: the work across the 1000/1500 interface is not the internal "
+                      "energy's change (a finding, not a bar)"));
 }
 
 }  // namespace

@@ -106,7 +106,8 @@ struct Scene {
   TermSwitches terms;
   double beta = 0.0;  // artificial viscosity, eq. (10)
   // physics.continuity_form: d rho_i/dt from the neighbours' masses (eq. 11) or from their
-  // volumes (Colagrossi & Landrini 2003; terms/ContinuityEquation.hpp).
+  // volumes (Colagrossi & Landrini 2003; terms/ContinuityEquation.hpp), and with it the pressure
+  // gradient of the same pair (terms/PressureGradient.hpp).
   bool continuityByVolume = false;
   double diffusionDelta = 0.0;  // density diffusion delta (terms.densityDiffusion: its form)
   ShiftingParameters shifting;  // particle shifting, once a step (ParticleShifting.hpp)

@@ -102,10 +102,11 @@ struct Flops {
 
 // The scene's values of the terms' parameters.
 struct TermParameters {
-  double beta = 0.0;                // artificial viscosity, eq. (10)
-  bool continuityByVolume = false;  // terms/ContinuityEquation.hpp
-  double diffusionDelta = 0.0;      // density diffusion's delta (Molteni & Colagrossi 2009)
-  double soundSpeed = 0.0;          // c0 [m/s], of density diffusion
+  double beta = 0.0;                      // artificial viscosity, eq. (10)
+  bool continuityByVolume = false;        // terms/ContinuityEquation.hpp
+  bool pressureGradientByVolume = false;  // terms/PressureGradient.hpp
+  double diffusionDelta = 0.0;            // density diffusion's delta (Molteni & Colagrossi 2009)
+  double soundSpeed = 0.0;                // c0 [m/s], of density diffusion
   // The hydrostatic density difference of Fourtakas et al.'s (2019) density diffusion: the
   // phase's Tait EOS (eq. 8: rho0, K = rho0 c0^2 / gamma, gamma an integer) and the uniform body
   // acceleration g (zero beyond D).
