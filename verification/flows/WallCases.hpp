@@ -64,21 +64,20 @@ inline std::string restingTankScene(const std::string& model, int cells, double 
 }
 
 // Two layers at rest in the same tank, each H/2 deep: a light phase (1000 kg/m^3) over a heavy
-// one (1500, the paper's two fluids), listed in the scene with the heavy phase
+// one (by default 1500, the paper's two fluids), listed in the scene with the heavy phase
 // first or second (the fluid blocks in the same order either way), the named model's kernel and
 // density diffusion (Wendland C2 at h/dx 2, Fourtakas et al.'s delta 0.1 within each phase), one
 // c0 = 10 sqrt(2 g H) for both. The heavy layer starts at the pressure of the light one above it
 // (its `surface` the height of light fluid of its weight). The floor reads g (rho_l + rho_h) H/2.
-// `continuityForm`: physics.continuity_form (SCENES.md); `aspect`: the width over H.
+// `continuityForm`: physics.continuity_form (SCENES.md); `heavy`: the heavy phase's rho0.
 inline std::string layeredTankScene(const std::string& model, int cells, double endTime,
                                     bool heavyFirst,
                                     const std::string& continuityForm = "lobovsky_kren",
-                                    double aspect = 1.0) {
-  const double H = 1.0, g = 9.81, c0 = 10 * std::sqrt(2 * g * H), light = 1000.0, heavy = 1500.0;
+                                    double heavy = 1500.0) {
+  const double H = 1.0, g = 9.81, c0 = 10 * std::sqrt(2 * g * H), light = 1000.0;
   std::ostringstream s;
   s.precision(17);
-  s << "name = \"layered_tank\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [" << aspect
-    << ", 1.5]\n"
+  s << "name = \"layered_tank\"\ndimension = 2\n[domain]\nlower = [0.0, 0.0]\nupper = [1.0, 1.5]\n"
     << "x_lower = \"free_slip\"\nx_upper = \"free_slip\"\ny_lower = \"free_slip\"\n"
     << "y_upper = \"open\"\n"
     << (model == "mirror_ghosts" ? "ghost_pressure = \"hydrostatic\"\n" : "")
@@ -90,11 +89,9 @@ inline std::string layeredTankScene(const std::string& model, int cells, double 
   if (heavyFirst) phase("heavy", heavy);
   phase("light", light);
   if (!heavyFirst) phase("heavy", heavy);
-  s << "[[fluid]]\nlower = [0.0, 0.0]\nupper = [" << aspect << ", " << H / 2
-    << "]\nphase = \"heavy\"\n"
+  s << "[[fluid]]\nlower = [0.0, 0.0]\nupper = [1.0, " << H / 2 << "]\nphase = \"heavy\"\n"
     << "initial_pressure = \"hydrostatic\"\nsurface = " << H / 2 * (1 + light / heavy) << "\n"
-    << "[[fluid]]\nlower = [0.0, " << H / 2 << "]\nupper = [" << aspect << ", " << H
-    << "]\nphase = \"light\"\n"
+    << "[[fluid]]\nlower = [0.0, " << H / 2 << "]\nupper = [1.0, " << H << "]\nphase = \"light\"\n"
     << "initial_pressure = \"hydrostatic\"\n[physics]\ngravity = [0.0, " << -g
     << "]\nartificial_viscosity = 1.0\nmorris_viscosity = true\ndensity_diffusion = 0.1\n"
     << "density_diffusion_form = \"fourtakas\"\ncontinuity_form = \"" << continuityForm
