@@ -66,6 +66,10 @@ VARIANTS = [
 # +5.1 % at h/dx 2; measured 2026-12-06), but Wendland C2 at h/dx 1.33 does not hold a tank at rest: 2-D H/dx 20,
 # bottom pressure 1.5 % (1:1) and max|u| 0.024 sqrt(gH) (4:1); 3-D 1:1:1 H/dx 20, max|u| 0.036 sqrt(gH) (the lattice
 # gives way at t sqrt(g/H) = 8; tank_at_rest_study).
+# Resolutions the named model alone runs at: the paper's model at H/dx 80 in the 1000/1050 lock exchange is stopped
+# by the energy check at t = 0.586 s (its two-fluid scenes have beta = 0: nothing damps the step's oscillations;
+# measured 2026-12-07), so it has no scene there.
+NAMED_ONLY = {("two_fluids_rho1050", "dx0.00075")}
 NAMED = [  # (base, resolution tag or None for the base scene itself, end time or None for the resolution's)
     ("dam_break", "dx0.025", None), ("dam_break", None, None), ("dam_break", "dx0.005", None),
     ("dam_break_lobovsky", "dx0.02", None), ("dam_break_lobovsky", None, None), ("dam_break_lobovsky", "dx0.005", None),
@@ -150,7 +154,8 @@ def variant(base: str, tag: str, dx: float, end, why: str, named: bool = False) 
 
 def main():
     for base, tag, dx, end, why in VARIANTS:
-        (SCENES / f"{base}_{tag}.toml").write_text(variant(base, tag, dx, end, why))
+        if (base, tag) not in NAMED_ONLY:
+            (SCENES / f"{base}_{tag}.toml").write_text(variant(base, tag, dx, end, why))
     resolutions = {(base, tag): (dx, end, why) for base, tag, dx, end, why in VARIANTS}
     for base, tag, end_time in NAMED:
         if tag is None:
