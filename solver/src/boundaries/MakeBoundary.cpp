@@ -37,11 +37,13 @@ std::unique_ptr<Boundary<D>> makeBoundary(const Scene& s, const Boundaries<D>& b
     SolidBox<D> box;
     for (int a = 0; a < D; ++a) {
       box.lower[a] = o.lower[a], box.upper[a] = o.upper[a];
-      // A face on the domain's own face meets no fluid (the scene's reader keeps obstacles
-      // inside the domain; 1e-12 as it does).
-      box.exposed[a] = {o.lower[a] > bounds.lower[a] + 1e-12, o.upper[a] < bounds.upper[a] - 1e-12};
+      // A face on the domain's own wall face meets no fluid (the scene's reader keeps obstacles
+      // inside the domain; 1e-12 as it does); on a periodic face it meets the fluid beyond it.
+      const bool periodic = bounds.face[a][0] == FaceKind::periodic;
+      box.exposed[a] = {periodic || o.lower[a] > bounds.lower[a] + 1e-12,
+                        periodic || o.upper[a] < bounds.upper[a] - 1e-12};
     }
-    layObstacle(box, o.wall, s.dx, s.wallLayers, lattice);
+    layObstacle(box, o.wall, bounds, !particles, s.dx, s.wallLayers, lattice);
     solids.push_back(box);
   }
   if (!solids.empty()) terms.push_back("obstacles_adami2012");

@@ -39,9 +39,12 @@ struct WallLattice {
 template <int D>
 void layBoxWalls(const Boundaries<D>& bounds, double dx, int layers, WallLattice<D>& out);
 // The particles of `box` within `layers` spacings of its faces (its inside needs none: no fluid
-// reaches it), rule by `wall` (free or no slip) over the faces each lies within reach of.
+// reaches it), rule by `wall` (free or no slip) over the faces each lies within reach of; with
+// `mirroredWalls` (the box's wall faces keep mirror ghosts) continued `layers` spacings beyond
+// each such face it lies on, and imaged across periodic faces within `layers` dx of them.
 template <int D>
-void layObstacle(const SolidBox<D>& box, FaceKind wall, double dx, int layers, WallLattice<D>& out);
+void layObstacle(const SolidBox<D>& box, FaceKind wall, const Boundaries<D>& bounds,
+                 bool mirroredWalls, double dx, int layers, WallLattice<D>& out);
 
 template <int D>
 class WallParticles final : public Boundary<D> {
