@@ -40,6 +40,11 @@ int reportError(const std::exception& e) {
   return badInput ? sph::exitBadInput : sph::exitOutputError;
 }
 
+// "1 phase", "2 phases".
+std::string counted(std::size_t n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 // --max-memory and --max-steps, for `run` and `check`.
 void addLimits(CLI::App* command, sph::RunLimits& limits, std::uint64_t& maxMemory) {
   command
@@ -222,7 +227,8 @@ int main(int argc, char** argv) {
       sph::RunEstimate e = sph::checkMemory(scene, options.limits);
       sph::checkDuration(scene, options.limits, e);
       std::cout << scenePath << ": ok (scene '" << scene.name << "', " << scene.dimension << "-D, "
-                << scene.fluids.size() << " fluid blocks, " << scene.phases.size() << " phases)\n"
+                << counted(scene.fluids.size(), "fluid block") << ", "
+                << counted(scene.phases.size(), "phase") << ")\n"
                 << std::setprecision(3) << "  estimated: " << e.particles << " particles, "
                 << e.memory / 1048576.0 << " MiB of memory (" << e.available / 1048576.0
                 << " MiB available), " << e.steps << " steps (first dt " << e.firstDt << " s, "
