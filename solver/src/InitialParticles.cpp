@@ -270,7 +270,8 @@ Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* pack
     for (const Vec<D>& x : nodes) {
       double rho = ph.rho0;
       if (b.hydrostatic)
-        rho = TaitEquationOfState::density(ph.p0 + ph.rho0 * g * (b.surface - x[D - 1]), ph);
+        rho = TaitEquationOfState::density(
+            ph.p0 + ph.rho0 * g * (b.surface - heightAgainstGravity(scene, x.data())), ph);
       if (b.stretching) {  // Scene.hpp: -grad p / rho0 = G G (x - c), p = p0 at Q = Q_max
         const Vec<D> d = x - c;
         rho = TaitEquationOfState::density(ph.p0 + 0.5 * ph.rho0 * (Qmax - d.dot(GG * d)), ph);

@@ -130,10 +130,10 @@ std::string latticeUnderPressureNote(const Scene& scene) {
   // The largest p / rho0 a block starts at on its lattice: its bottom's, hydrostatic or p0.
   double pOverRho = 0.0;
   for (const FluidBlock& b : scene.fluids) {
-    const bool circle = b.shape == FluidBlock::Shape::circle;
     if (D == 2 ? packingLeavesLattice<2>(b, scene) : packingLeavesLattice<3>(b, scene)) continue;
     const Phase& ph = scene.phases[b.phase];
-    const double bottom = circle ? b.center[D - 1] - b.radius : b.lower[D - 1];
+    double bottom = 0, top = 0;
+    heightRange(scene, b, bottom, top);
     const double p = ph.p0 + (b.hydrostatic ? ph.rho0 * g * (b.surface - bottom) : 0.0);
     pOverRho = std::max(pOverRho, p / ph.rho0);
   }

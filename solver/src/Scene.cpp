@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -253,7 +254,8 @@ void readFluids(std::vector<SceneTable> fluids, Scene& s, SceneTable& top) {
       if (b.packingNoise >= 0.5) pk.fail("noise", "must be below 0.5 (a fraction of dx)");
       pk.rejectUnknown();
     }
-    b.surface = t.number("surface", hi[D - 1]);
+    // (the default, the block's highest point, waits for the gravity: readScene below)
+    b.surface = t.number("surface", std::numeric_limits<double>::quiet_NaN());
     for (int a = 0; a < D; ++a) {
       const bool below = lo[a] < s.lower[a] - 1e-12;
       const bool above = hi[a] > s.upper[a] + 1e-12;
@@ -547,6 +549,11 @@ Scene parseScene(const std::string& text, const std::string& file) {
   s.bodyAcceleration = physics.vector("gravity", D, std::vector<double>(D, 0.0));
   const auto force = physics.vector("body_force", D, std::vector<double>(D, 0.0));
   for (int a = 0; a < D; ++a) s.bodyAcceleration[a] += force[a];
+  for (FluidBlock& b : s.fluids)
+    if (std::isnan(b.surface)) {
+      double lowest = 0;
+      heightRange(s, b, lowest, b.surface);
+    }
   s.beta = physics.nonNegative("artificial_viscosity", 0.0);
   s.terms.artificialViscosity = s.beta > 0.0;
   s.terms.morrisViscosity = physics.boolean("morris_viscosity", false);
@@ -597,6 +604,45 @@ Scene parseScene(const std::string& text, const std::string& file) {
   top.rejectUnknown();
   warnOnLowSoundSpeed(s);
   return s;
+}
+
+namespace {
+// -g / |g|, or the last axis where g = 0. Along an axis it is exactly 1 there and 0 elsewhere,
+// so a height is that coordinate to the bit.
+std::vector<double> upward(const Scene& s) {
+  double g2 = 0;
+  for (int a = 0; a < s.dimension; ++a) g2 += s.bodyAcceleration[a] * s.bodyAcceleration[a];
+  std::vector<double> up(s.dimension, 0.0);
+  if (!(g2 > 0)) {
+    up[s.dimension - 1] = 1.0;
+    return up;
+  }
+  const double g = std::sqrt(g2);
+  for (int a = 0; a < s.dimension; ++a) up[a] = -s.bodyAcceleration[a] / g;
+  return up;
+}
+}  // namespace
+
+double heightAgainstGravity(const Scene& s, const double* x) {
+  const std::vector<double> up = upward(s);
+  double z = 0;
+  for (int a = 0; a < s.dimension; ++a) z += up[a] * x[a];
+  return z;
+}
+
+void heightRange(const Scene& s, const FluidBlock& b, double& lowest, double& highest) {
+  const std::vector<double> up = upward(s);
+  if (b.shape == FluidBlock::Shape::circle) {
+    const double z = heightAgainstGravity(s, b.center.data());
+    lowest = z - b.radius, highest = z + b.radius;
+    return;
+  }
+  // A box's extremes are corners: along each axis the side that up (or down) points to.
+  lowest = highest = 0.0;
+  for (int a = 0; a < s.dimension; ++a) {
+    highest += up[a] * (up[a] >= 0 ? b.upper[a] : b.lower[a]);
+    lowest += up[a] * (up[a] >= 0 ? b.lower[a] : b.upper[a]);
+  }
 }
 
 Scene readScene(const std::string& path) {

@@ -31,13 +31,16 @@ struct FluidBlock {
   // elliptical drop is G = [[A0, 0], [0, -A0]].
   std::vector<double> velocityGradient;
   std::vector<double> gradientCenter;  // c
-  bool hydrostatic = false;  // start at p = rho0 |g| (surface - y), density from the inverse EOS
+  // Start at p = p0 + rho0 |g| (surface - z), z = -g.x/|g| the height against the body
+  // acceleration (y for gravity along -y), density from the inverse EOS.
+  bool hydrostatic = false;
   // Start at the pressure that keeps v = G (x - c) linear at t = 0 (dG/dt = 0 there):
   // -grad p / rho0 = G G (x - c), so p = p0 + rho0/2 (Q_max - Q(x)), Q = (x - c)^T G G (x - c),
   // which needs G G symmetric; Q_max is Q's largest value over the block (circle:
   // R^2 max(0, lambda_max(G G)); rectangle: over its corners and centre), so p = p0 there.
   bool stretching = false;
-  double surface = 0.0;  // free-surface height for the hydrostatic start (default: block top)
+  // The free surface's height z for the hydrostatic start (default: the block's highest point).
+  double surface = 0.0;
   // Where the particles start: on the Cartesian lattice, or packed (Colagrossi et al. 2012,
   // eq. 2.16, 2-D and 3-D) inside the block closed by fixed solid layers or the walls' mirror
   // images, with the scene's kernel and h/dx; then m = rho V0, V0 = block volume / N.
@@ -129,6 +132,12 @@ struct Scene {
 
   double h0() const { return hOverDx * dx; }
 };
+
+// The height of x against the scene's body acceleration g, -g.x / |g|: x's last coordinate for
+// g along that axis downward, and where g = 0.
+double heightAgainstGravity(const Scene& s, const double* x);
+// The lowest and highest such height over a fluid block.
+void heightRange(const Scene& s, const FluidBlock& b, double& lowest, double& highest);
 
 // Reads and checks a scene file. Throws SceneError naming the file, the key and the problem.
 Scene readScene(const std::string& path);
