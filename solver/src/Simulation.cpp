@@ -12,6 +12,7 @@
 #include "sph/EquationOfState.hpp"
 #include "sph/InitialParticles.hpp"
 #include "sph/Parallel.hpp"
+#include "sph/boundaries/NoSlipContinuity.hpp"
 #include "sph/integrators/PositionVerlet.hpp"
 #include "sph/integrators/PredictorCorrector.hpp"
 #include "sph/integrators/VelocityVerlet.hpp"
@@ -126,6 +127,11 @@ Simulation<D>::Simulation(const Scene& scene, Particles<D> initial)
       boundary_(makeBoundary<D>(scene, bounds_)),
       y_(std::move(initial)),
       skinFraction_(scene.neighbourSkin) {
+  // (with wall particles the box's wall faces have no ghosts; obstacles keep the faces' ghosts)
+  for (int a = 0; a < D; ++a)
+    for (int side = 0; side < 2; ++side)
+      noSlipGhosts_ |=
+          bounds_.face[a][side] == FaceKind::no_slip && scene.wallModel == WallModel::mirror_ghosts;
   // The scene's word for each (name(TimeIntegrator), Scene.cpp) is the integrator's own.
   static_assert(integrators::PositionVerlet::name == "position_verlet" &&
                 integrators::PredictorCorrector::name == "predictor_corrector" &&
@@ -162,6 +168,7 @@ std::vector<std::string> Simulation<D>::termNames() const {
   for (double c : scene_.bodyAcceleration) g += std::abs(c);
   if (g > 0) names.push_back("body_force");
   boundary_->listTerms(names);
+  if (noSlipGhosts_) names.push_back("no_slip_ghosts_free_slip_continuity");
   if (bounds_.anyPeriodic()) names.push_back("periodic");
   if (source_) names.push_back("source");
   if (shifting_) names.push_back("shifting_" + std::string(name(scene_.shifting.form)));
@@ -279,6 +286,9 @@ void Simulation<D>::rates(const Particles<D>& state, double t, Derivatives<D>& o
   if (domain_ && !reuse) frameGrid(hMax);
   // (over several processes the rates of the owned particles only, in their order)
   forces_(set_, out, g, {skin_, reuse}, shiftingSums);  // with F/rho of eq. (12)
+  if (noSlipGhosts_)
+    noSlipGhostContinuity(set_, bounds_, scene_.kernel, scene_.continuityByVolume,
+                          scene_.terms.variableH, out);
   if (source_) source_(t, state, out);
   ++evaluations_;
   if (reuse) ++reusedLists_;

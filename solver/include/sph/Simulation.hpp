@@ -242,6 +242,9 @@ class Simulation {
   std::unique_ptr<ParticleShifting<D>> shifting_;
   LineVector<Vec<D>> shift_;   // dr of the step's final stage, from its trial state
   bool shiftingSums_ = false;  // shifting's pair sums in the pair loop (else its own gather)
+  // A no-slip face with mirror ghosts: their continuity term is corrected
+  // (boundaries/NoSlipContinuity.hpp).
+  bool noSlipGhosts_ = false;
   Check check_;
   Reflection reflection_;
   Particles<D> y_, yStar_;
