@@ -101,9 +101,12 @@ void layObstacle(const SolidBox<D>& box, FaceKind wall, const Boundaries<D>& bou
                            : bounds.upper[a] - out.x[k][a] < reach ? -period
                                                                    : 0.0;
       if (shift == 0.0) continue;
+      // (copies: a push_back may move the elements it would read)
       Vec<D> image = out.x[k];
+      const WallVelocityRule<D> rule = out.rule[k];
+      const double volume = out.volume[k];
       image[a] += shift;
-      out.x.push_back(image), out.rule.push_back(out.rule[k]), out.volume.push_back(out.volume[k]);
+      out.x.push_back(image), out.rule.push_back(rule), out.volume.push_back(volume);
     }
   }
 }
