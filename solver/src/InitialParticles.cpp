@@ -246,6 +246,7 @@ Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* pack
   double g = 0;
   for (double c : scene.bodyAcceleration) g += c * c;
   g = std::sqrt(g);
+  const std::vector<double> up = upward(scene);  // the hydrostatic start's heights
   for (std::size_t k = 0; k < scene.fluids.size(); ++k) {
     const FluidBlock& b = scene.fluids[k];
     std::vector<Vec<D>> nodes = latticeNodes<D>(b, dx);
@@ -270,8 +271,8 @@ Particles<D> latticeParticles(const Scene& scene, std::vector<PackedBlock>* pack
     for (const Vec<D>& x : nodes) {
       double rho = ph.rho0;
       if (b.hydrostatic)
-        rho = TaitEquationOfState::density(
-            ph.p0 + ph.rho0 * g * (b.surface - heightAgainstGravity(scene, x.data())), ph);
+        rho = TaitEquationOfState::density(ph.p0 + ph.rho0 * g * (b.surface - height(up, x.data())),
+                                           ph);
       if (b.stretching) {  // Scene.hpp: -grad p / rho0 = G G (x - c), p = p0 at Q = Q_max
         const Vec<D> d = x - c;
         rho = TaitEquationOfState::density(ph.p0 + 0.5 * ph.rho0 * (Qmax - d.dot(GG * d)), ph);

@@ -606,9 +606,6 @@ Scene parseScene(const std::string& text, const std::string& file) {
   return s;
 }
 
-namespace {
-// -g / |g|, or the last axis where g = 0. Along an axis it is exactly 1 there and 0 elsewhere,
-// so a height is that coordinate to the bit.
 std::vector<double> upward(const Scene& s) {
   double g2 = 0;
   for (int a = 0; a < s.dimension; ++a) g2 += s.bodyAcceleration[a] * s.bodyAcceleration[a];
@@ -621,19 +618,17 @@ std::vector<double> upward(const Scene& s) {
   for (int a = 0; a < s.dimension; ++a) up[a] = -s.bodyAcceleration[a] / g;
   return up;
 }
-}  // namespace
 
-double heightAgainstGravity(const Scene& s, const double* x) {
-  const std::vector<double> up = upward(s);
+double height(const std::vector<double>& up, const double* x) {
   double z = 0;
-  for (int a = 0; a < s.dimension; ++a) z += up[a] * x[a];
+  for (std::size_t a = 0; a < up.size(); ++a) z += up[a] * x[a];
   return z;
 }
 
 void heightRange(const Scene& s, const FluidBlock& b, double& lowest, double& highest) {
   const std::vector<double> up = upward(s);
   if (b.shape == FluidBlock::Shape::circle) {
-    const double z = heightAgainstGravity(s, b.center.data());
+    const double z = height(up, b.center.data());
     lowest = z - b.radius, highest = z + b.radius;
     return;
   }

@@ -133,9 +133,12 @@ struct Scene {
   double h0() const { return hOverDx * dx; }
 };
 
-// The height of x against the scene's body acceleration g, -g.x / |g|: x's last coordinate for
-// g along that axis downward, and where g = 0.
-double heightAgainstGravity(const Scene& s, const double* x);
+// The unit vector against the scene's body acceleration g, -g / |g|, or the last axis where g = 0.
+// Along an axis it is exactly 1 there and 0 elsewhere, so that a height is that coordinate to the
+// bit.
+std::vector<double> upward(const Scene& s);
+// The height of x along `up`: up . x.
+double height(const std::vector<double>& up, const double* x);
 // The lowest and highest such height over a fluid block.
 void heightRange(const Scene& s, const FluidBlock& b, double& lowest, double& highest);
 

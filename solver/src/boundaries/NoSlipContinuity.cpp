@@ -14,23 +14,32 @@ void noSlipGhostContinuity(const InteractionSet<D>& set, const Boundaries<D>& bo
                            KernelKind kernel, bool byVolume, bool variableH, Derivatives<D>& out) {
   const std::size_t nFluid = set.nFluid, end = set.haloEnd();
   // Each halo entry's free-slip velocity, built as buildInteractionSet builds the halo: axis by
-  // axis, the images of the entries before them (InteractionSet::halo).
-  std::vector<Vec<D>> free(set.v.begin(), set.v.begin() + static_cast<std::ptrdiff_t>(end));
+  // axis, the images of the entries before them (InteractionSet::halo); a fluid entry's is its own.
+  std::vector<Vec<D>> free(end - nFluid);
+  auto freeOf = [&](std::size_t k) -> const Vec<D>& {
+    return k < nFluid ? set.v[k] : free[k - nFluid];
+  };
   std::size_t at = nFluid;
   for (int a = 0; a < D; ++a)
     for (const std::int64_t code : set.halo[a]) {
       const std::size_t k = static_cast<std::size_t>(code / 2);
       const int side = static_cast<int>(code % 2);
-      free[at] = free[k];
+      Vec<D> v = freeOf(k);
       if (Boundaries<D>::isWall(bounds.face[a][side]))
-        free[at][a] = 2.0 * bounds.wallVelocity[a][side][a] - free[k][a];
-      ++at;
+        v[a] = 2.0 * bounds.wallVelocity[a][side][a] - v[a];
+      free[at++ - nFluid] = v;
     }
-  // The ghosts whose two velocities differ, by cell (of side the largest support, 2 h_max).
-  std::vector<std::int64_t> ghosts;
+  // The ghosts whose two velocities differ, with v_g - v_g^free, by cell (of side the largest
+  // support, 2 h_max).
+  struct Ghost {
+    std::int64_t key;
+    std::size_t entry;
+    Vec<D> jump;
+  };
+  std::vector<Ghost> ghosts;
   double hMax = 0;
   for (std::size_t g = nFluid; g < end; ++g)
-    if (set.v[g] != free[g]) ghosts.push_back(static_cast<std::int64_t>(g));
+    if (set.v[g] != free[g - nFluid]) ghosts.push_back({0, g, set.v[g] - free[g - nFluid]});
   if (ghosts.empty()) return;
   for (std::size_t i = 0; i < end; ++i) hMax = std::max(hMax, set.h[i]);
   const double cell = 2.0 * hMax;
@@ -45,13 +54,15 @@ void noSlipGhostContinuity(const InteractionSet<D>& set, const Boundaries<D>& bo
     for (int a = D - 1; a >= 0; --a) key = key * span + c[a];
     return key;
   };
-  std::vector<std::pair<std::int64_t, std::int64_t>> byCell(ghosts.size());
-  for (std::size_t q = 0; q < ghosts.size(); ++q) {
+  for (Ghost& q : ghosts) {
     std::array<std::int64_t, D> c;
-    for (int a = 0; a < D; ++a) c[a] = cellOf(set.x[ghosts[q]], a);
-    byCell[q] = {keyOf(c), ghosts[q]};
+    for (int a = 0; a < D; ++a) c[a] = cellOf(set.x[q.entry], a);
+    q.key = keyOf(c);
   }
-  std::sort(byCell.begin(), byCell.end());
+  // (by entry within a cell: each particle's sum in one order whatever the threads)
+  std::sort(ghosts.begin(), ghosts.end(), [](const Ghost& p, const Ghost& q) {
+    return p.key != q.key ? p.key < q.key : p.entry < q.entry;
+  });
   // Only a particle within 2 h_max of a no-slip face has such a ghost in reach.
   auto nearNoSlip = [&](const Vec<D>& x) {
     for (int a = 0; a < D; ++a)
@@ -71,15 +82,15 @@ void noSlipGhostContinuity(const InteractionSet<D>& set, const Boundaries<D>& bo
     for (int n = 0; n < static_cast<int>(std::pow(3, D)); ++n) {
       for (int a = 0, m = n; a < D; ++a, m /= 3) c[a] = c0[a] + m % 3 - 1;
       const std::int64_t key = keyOf(c);
-      auto it =
-          std::lower_bound(byCell.begin(), byCell.end(), std::make_pair(key, std::int64_t{0}));
-      for (; it != byCell.end() && it->first == key; ++it) {
-        const std::size_t g = static_cast<std::size_t>(it->second);
+      auto it = std::lower_bound(ghosts.begin(), ghosts.end(), key,
+                                 [](const Ghost& q, std::int64_t k) { return q.key < k; });
+      for (; it != ghosts.end() && it->key == key; ++it) {
+        const std::size_t g = it->entry;
         const Vec<D> r = set.x[i] - set.x[g];
         const double h = 0.5 * (set.h[i] + set.h[g]), r2 = r.squaredNorm();
         if (!(r2 < 4.0 * h * h) || r2 == 0.0) continue;
         const double rr = std::sqrt(r2), F = kernelSlope<D>(kernel, rr, h) / rr;
-        const double vGradW = (set.v[g] - free[g]).dot(r) * F, V = set.m[g] / set.rho[g];
+        const double vGradW = it->jump.dot(r) * F, V = set.m[g] / set.rho[g];
         sum += (byVolume ? set.rho[i] * V : set.m[g]) * vGradW;
         divergence += V * vGradW;
       }
